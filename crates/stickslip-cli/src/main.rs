@@ -1,0 +1,63 @@
+//! `stickslip`: the command-line front end.
+//!
+//! `main` parses the arguments; each subcommand lives in its own module with a `run` function
+//! that returns a typed error, so bad input ends in a clear message and a non-zero exit code,
+//! never a panic.
+
+mod block_cmd;
+mod output;
+mod theory_cmd;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// Elasto-plastic friction with vibration effects: theory, reference simulations and runs.
+#[derive(Debug, Parser)]
+#[command(name = "stickslip", version, about)]
+struct Cli {
+    /// Print machine-readable JSON instead of tables.
+    #[arg(long, global = true)]
+    json: bool,
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Popov's vibration theory: Ψ_w(β), effective and static friction coefficients.
+    Theory(theory_cmd::TheoryArgs),
+    /// The seed's Example 1: a block under a time-dependent force, any law.
+    Block(block_cmd::BlockArgs),
+}
+
+/// Errors a subcommand reports to the user.
+#[derive(Debug, thiserror::Error)]
+pub enum CliError {
+    /// Invalid parameters.
+    #[error("invalid parameter: {0}")]
+    Param(#[from] stickslip_core::ParamError),
+    /// Invalid argument syntax the parser could not catch.
+    #[error("invalid argument: {0}")]
+    Argument(String),
+    /// The simulation failed.
+    #[error("simulation failed: {0}")]
+    Sim(#[from] stickslip_core::block::SimError),
+    /// Writing output failed.
+    #[error("output failed: {0}")]
+    Output(#[from] serde_json::Error),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match &cli.command {
+        Command::Theory(args) => theory_cmd::run(args, cli.json),
+        Command::Block(args) => block_cmd::run(args, cli.json),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}

@@ -1,0 +1,178 @@
+//! `stickslip theory`: Popov's vibration theory from the command line.
+
+use crate::{CliError, output};
+use clap::{Args, Subcommand, ValueEnum};
+use serde::Serialize;
+use stickslip_core::popov;
+use stickslip_core::waveform::{Waveform, WaveformKind};
+
+/// Arguments of `stickslip theory`.
+#[derive(Debug, Args)]
+pub struct TheoryArgs {
+    #[command(subcommand)]
+    command: TheoryCommand,
+}
+
+#[derive(Debug, Subcommand)]
+enum TheoryCommand {
+    /// Ψ_w(β) (Eq. 25/31, numeric) with the closed form (Eq. 34–36) where one exists.
+    Psi {
+        /// Waveform.
+        #[arg(long, value_parser = parse_waveform)]
+        waveform: WaveformKind,
+        /// Dimensionless velocity β (Eq. 17).
+        #[arg(long)]
+        beta: f64,
+    },
+    /// μ̄ = μ0 (1 − α Ψ_w(β)) (Eq. 33).
+    MuEff {
+        /// Waveform.
+        #[arg(long, value_parser = parse_waveform)]
+        waveform: WaveformKind,
+        /// Amplitude ratio α = A_z/ū_z (Eq. 16), in [0, 1].
+        #[arg(long)]
+        alpha: f64,
+        /// Dimensionless velocity β.
+        #[arg(long)]
+        beta: f64,
+        /// Coefficient of friction without vibration.
+        #[arg(long)]
+        mu0: f64,
+    },
+    /// Static coefficient under oscillation (Eq. 4, 6, 8).
+    Static {
+        /// Direction of the oscillation.
+        #[arg(long, value_enum)]
+        direction: Direction,
+        /// Amplitude over mean normal force, A/F_z.
+        #[arg(long)]
+        amplitude_ratio: f64,
+        /// Coefficient of friction without vibration.
+        #[arg(long)]
+        mu0: f64,
+    },
+}
+
+/// Oscillation direction.
+#[derive(Debug, Clone, Copy, ValueEnum, Serialize)]
+#[serde(rename_all = "kebab-case")]
+enum Direction {
+    /// Along the normal (Eq. 4).
+    Normal,
+    /// Along the sliding direction (Eq. 6).
+    Tangential,
+    /// In-plane, across the sliding direction (Eq. 8).
+    Transverse,
+}
+
+fn parse_waveform(s: &str) -> Result<WaveformKind, String> {
+    s.parse::<WaveformKind>().map_err(|e| e.to_string())
+}
+
+#[derive(Serialize)]
+struct PsiReport {
+    waveform: String,
+    beta: f64,
+    beta_c: f64,
+    psi: f64,
+    psi_closed_form: Option<f64>,
+}
+
+#[derive(Serialize)]
+struct MuEffReport {
+    waveform: String,
+    alpha: f64,
+    beta: f64,
+    mu0: f64,
+    psi: f64,
+    mu_eff: f64,
+}
+
+#[derive(Serialize)]
+struct StaticReport {
+    direction: Direction,
+    amplitude_ratio: f64,
+    mu0: f64,
+    mu_s: f64,
+}
+
+fn psi_of(kind: WaveformKind, beta: f64) -> Result<(Waveform, f64), CliError> {
+    let w = Waveform::from(kind);
+    let psi = popov::psi(&w, beta)?;
+    Ok((w, psi))
+}
+
+/// Runs `stickslip theory`.
+pub fn run(args: &TheoryArgs, json: bool) -> Result<(), CliError> {
+    match &args.command {
+        TheoryCommand::Psi { waveform, beta } => {
+            let (w, psi) = psi_of(*waveform, *beta)?;
+            let r = PsiReport {
+                waveform: waveform.to_string(),
+                beta: *beta,
+                beta_c: w.beta_c(),
+                psi,
+                psi_closed_form: popov::psi_closed_form(&w, *beta),
+            };
+            if json {
+                return output::json(&r);
+            }
+            let mut rows = vec![
+                ("waveform", r.waveform.clone()),
+                ("beta", format!("{}", r.beta)),
+                ("beta_c", format!("{}", r.beta_c)),
+                ("psi (Eq. 25/31)", format!("{:.6}", r.psi)),
+            ];
+            if let Some(c) = r.psi_closed_form {
+                rows.push(("psi closed form", format!("{c:.6}")));
+            }
+            output::pairs(&rows);
+        }
+        TheoryCommand::MuEff {
+            waveform,
+            alpha,
+            beta,
+            mu0,
+        } => {
+            let (_, psi) = psi_of(*waveform, *beta)?;
+            let r = MuEffReport {
+                waveform: waveform.to_string(),
+                alpha: *alpha,
+                beta: *beta,
+                mu0: *mu0,
+                psi,
+                mu_eff: popov::mu_eff(*mu0, *alpha, psi)?,
+            };
+            if json {
+                return output::json(&r);
+            }
+            output::pairs(&[
+                ("waveform", r.waveform.clone()),
+                ("psi", format!("{:.6}", r.psi)),
+                ("mu_eff (Eq. 33)", format!("{:.6}", r.mu_eff)),
+            ]);
+        }
+        TheoryCommand::Static {
+            direction,
+            amplitude_ratio,
+            mu0,
+        } => {
+            let mu_s = match direction {
+                Direction::Normal => popov::mu_s_normal(*mu0, *amplitude_ratio)?,
+                Direction::Tangential => popov::mu_s_tangential(*mu0, *amplitude_ratio)?,
+                Direction::Transverse => popov::mu_s_transverse(*mu0, *amplitude_ratio)?,
+            };
+            let r = StaticReport {
+                direction: *direction,
+                amplitude_ratio: *amplitude_ratio,
+                mu0: *mu0,
+                mu_s,
+            };
+            if json {
+                return output::json(&r);
+            }
+            output::pairs(&[("mu_s", format!("{:.6}", r.mu_s))]);
+        }
+    }
+    Ok(())
+}

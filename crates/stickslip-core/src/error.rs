@@ -1,0 +1,115 @@
+//! Typed construction errors. Every parameterized type in the core validates its input once,
+//! at construction, so nothing inside a step has to check (or can panic on) bad parameters.
+
+use thiserror::Error;
+
+/// Why a set of parameters was rejected.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ParamError {
+    /// A parameter is NaN or infinite.
+    #[error("parameter `{name}` must be finite, got {value}")]
+    NotFinite {
+        /// Parameter name.
+        name: &'static str,
+        /// Offending value.
+        value: f64,
+    },
+    /// A parameter that must be strictly positive is not.
+    #[error("parameter `{name}` must be > 0, got {value}")]
+    NotPositive {
+        /// Parameter name.
+        name: &'static str,
+        /// Offending value.
+        value: f64,
+    },
+    /// A parameter that must be non-negative is negative.
+    #[error("parameter `{name}` must be >= 0, got {value}")]
+    Negative {
+        /// Parameter name.
+        name: &'static str,
+        /// Offending value.
+        value: f64,
+    },
+    /// A parameter lies outside its admissible range.
+    #[error("parameter `{name}` = {value} is outside [{min}, {max}]")]
+    OutOfRange {
+        /// Parameter name.
+        name: &'static str,
+        /// Offending value.
+        value: f64,
+        /// Lower bound (inclusive).
+        min: f64,
+        /// Upper bound (inclusive).
+        max: f64,
+    },
+    /// The break-away coefficient exceeds the switch's upper threshold.
+    #[error("mu_ba = {mu_ba} must not exceed mu_max = {mu_max} (seed Eq. 5-7)")]
+    BreakAwayAboveMax {
+        /// μ_ba.
+        mu_ba: f64,
+        /// μ_max.
+        mu_max: f64,
+    },
+    /// μ_max lies above the sliding curve at zero velocity, which leaves a step in the switch.
+    #[error(
+        "mu_max = {mu_max} exceeds the sliding curve at 0+ (mu_ve(0+) = {mu_ve0}); the seed requires mu_ba < mu_max = mu_ve(0+)"
+    )]
+    MaxAboveSlidingCurve {
+        /// μ_max.
+        mu_max: f64,
+        /// μ_ve(0+).
+        mu_ve0: f64,
+    },
+    /// A sampled table is malformed.
+    #[error("table `{name}`: {reason}")]
+    BadTable {
+        /// Table name.
+        name: &'static str,
+        /// What is wrong.
+        reason: String,
+    },
+}
+
+/// Checks that `value` is finite.
+pub fn finite(name: &'static str, value: f64) -> Result<f64, ParamError> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(ParamError::NotFinite { name, value })
+    }
+}
+
+/// Checks that `value` is finite and strictly positive.
+pub fn positive(name: &'static str, value: f64) -> Result<f64, ParamError> {
+    finite(name, value)?;
+    if value > 0.0 {
+        Ok(value)
+    } else {
+        Err(ParamError::NotPositive { name, value })
+    }
+}
+
+/// Checks that `value` is finite and not negative.
+pub fn non_negative(name: &'static str, value: f64) -> Result<f64, ParamError> {
+    finite(name, value)?;
+    if value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(ParamError::Negative { name, value })
+    }
+}
+
+/// Checks that `value` is finite and inside `[min, max]`.
+pub fn in_range(name: &'static str, value: f64, min: f64, max: f64) -> Result<f64, ParamError> {
+    finite(name, value)?;
+    if (min..=max).contains(&value) {
+        Ok(value)
+    } else {
+        Err(ParamError::OutOfRange {
+            name,
+            value,
+            min,
+            max,
+        })
+    }
+}

@@ -1,0 +1,26 @@
+//! # stickslip-core
+//!
+//! The pure-math core of stickslip: no rapier, bevy or rerun in here.
+//!
+//! - [`law`]: the stateful elasto-plastic friction law of the seed paper (Eq. 4–7), its
+//!   baselines "Phys" (exact switched, Eq. 1–3), "Regul" (regularized) and plain Coulomb, all
+//!   behind one [`law::FrictionLaw`] interface that a physics engine calls once per step.
+//! - [`sliding_curve`]: the sliding curve μ_ve(|v|) (constant, Stribeck, table).
+//! - [`switch`]: the sine-blended switch α(μ) of Eq. 5–7.
+//! - [`waveform`] and [`popov`]: normalized vibration waveforms and Popov's (2020) theory of
+//!   friction under normal, tangential and transverse oscillation (Ψ_w(β), μ̄, static
+//!   coefficients) plus a time-stepped reference simulator of his spring model.
+//! - [`block`]: the seed's Example 1, a block under a time-dependent force, integrated with
+//!   adaptive explicit and implicit ODE methods from `differential-equations`.
+#![warn(missing_docs)]
+
+pub mod block;
+pub mod error;
+pub mod law;
+pub mod popov;
+pub mod sliding_curve;
+pub mod switch;
+pub mod vec2;
+pub mod waveform;
+
+pub use error::ParamError;

@@ -1,0 +1,47 @@
+//! Dense per-collider storage indexed by the collider handle's arena slot: a lookup in the
+//! contact hook is one bounds check and a generation compare, no hashing and no lock.
+
+use rapier3d::prelude::ColliderHandle;
+
+/// Values attached to colliders.
+#[derive(Debug, Clone)]
+pub(crate) struct ColliderMap<T> {
+    slots: Vec<Option<(u32, T)>>,
+}
+
+impl<T> Default for ColliderMap<T> {
+    fn default() -> Self {
+        ColliderMap { slots: Vec::new() }
+    }
+}
+
+impl<T> ColliderMap<T> {
+    pub fn insert(&mut self, handle: ColliderHandle, value: T) -> Option<T> {
+        let (i, generation) = handle.0.into_raw_parts();
+        let i = i as usize;
+        if self.slots.len() <= i {
+            self.slots.resize_with(i + 1, || None);
+        }
+        self.slots[i]
+            .replace((generation, value))
+            .filter(|(g, _)| *g == generation)
+            .map(|(_, v)| v)
+    }
+
+    pub fn remove(&mut self, handle: ColliderHandle) -> Option<T> {
+        let (i, generation) = handle.0.into_raw_parts();
+        let slot = self.slots.get_mut(i as usize)?;
+        match slot {
+            Some((g, _)) if *g == generation => slot.take().map(|(_, v)| v),
+            _ => None,
+        }
+    }
+
+    pub fn get(&self, handle: ColliderHandle) -> Option<&T> {
+        let (i, generation) = handle.0.into_raw_parts();
+        match self.slots.get(i as usize)? {
+            Some((g, v)) if *g == generation => Some(v),
+            _ => None,
+        }
+    }
+}

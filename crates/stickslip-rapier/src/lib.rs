@@ -1,0 +1,52 @@
+//! # stickslip-rapier
+//!
+//! A rapier3d 0.36 contact modifier that replaces plain Coulomb friction with stickslip's
+//! friction laws (the elasto-plastic law of the seed paper, or the Phys/Regul/Coulomb
+//! baselines) and applies vibration-modulated friction.
+//!
+//! ## Quick start
+//! ```
+//! use rapier3d::prelude::*;
+//! use stickslip_core::law::Law;
+//! use stickslip_core::sliding_curve::Curve;
+//! use stickslip_rapier::{FrictionMaterial, StickSlip};
+//!
+//! let mut world = PhysicsWorld::default();
+//! let ground = world.insert_collider(ColliderBuilder::cuboid(5.0, 0.1, 5.0), None);
+//! let (body, cube) = world.insert(
+//!     RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 0.35, 0.0)),
+//!     ColliderBuilder::cuboid(0.25, 0.25, 0.25),
+//! );
+//! // Elasto-plastic friction: c = 1e4 1/m, μ_ba = 0.5, μ_max = μ_ve = 0.55.
+//! let law = Law::elasto_plastic(1e4, 0.5, 0.55, Curve::constant(0.55).unwrap()).unwrap();
+//! let mut friction = StickSlip::new(FrictionMaterial::new(law));
+//! friction.attach(&mut world.colliders, ground, None);
+//! for _ in 0..60 {
+//!     friction.step(&mut world);
+//! }
+//! let report = &friction.reports()[0];
+//! assert!((report.normal_force - 125.0 * 9.81).abs() < 0.05 * 125.0 * 9.81);
+//! assert_eq!(report.regime, stickslip_core::law::Regime::Sticking);
+//! # let _ = (body, cube);
+//! ```
+//!
+//! See [`hook`](crate) docs in the source (`hook.rs`) for how the law maps onto rapier's
+//! per-manifold friction, and [`VibrationSource`] for vibration.
+#![warn(missing_docs)]
+
+mod collider_map;
+mod contact_store;
+mod hook;
+mod material;
+mod modifier;
+mod report;
+mod tangent;
+mod vibration;
+
+pub use material::FrictionMaterial;
+pub use modifier::{StickSlip, StickSlipConfig};
+pub use report::{ContactReport, WorldTotals};
+pub use vibration::{Amplitude, VibrationDirection, VibrationMode, VibrationSource};
+
+/// Re-export of the core crate.
+pub use stickslip_core as core;

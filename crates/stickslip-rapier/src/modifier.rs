@@ -1,0 +1,242 @@
+//! [`StickSlip`]: the contact modifier users add to their rapier world.
+
+use crate::collider_map::ColliderMap;
+use crate::contact_store::ContactStore;
+use crate::material::FrictionMaterial;
+use crate::report::{ContactReport, WorldTotals};
+use crate::vibration::VibrationSource;
+use rapier3d::prelude::*;
+use serde::{Deserialize, Serialize};
+use stickslip_core::ParamError;
+use stickslip_core::error::{in_range, positive};
+
+/// Tuning of the rapier realization (validated with [`StickSlipConfig::validate`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct StickSlipConfig {
+    /// Relative tangential speed below which a contact counts as holding (m/s). Holding
+    /// contacts are realized by rapier's rigid friction constraint and read back.
+    pub stick_speed: f64,
+    /// Fraction of a holding contact's drift from its stick anchor corrected per step
+    /// (through the solver's target tangent velocity); 0 turns anchoring off.
+    pub anchor_gain: f64,
+}
+
+impl Default for StickSlipConfig {
+    fn default() -> Self {
+        StickSlipConfig {
+            stick_speed: 1e-3,
+            anchor_gain: 0.5,
+        }
+    }
+}
+
+impl StickSlipConfig {
+    /// Checks the values.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        positive("stick_speed", self.stick_speed)?;
+        in_range("anchor_gain", self.anchor_gain, 0.0, 1.0)?;
+        Ok(())
+    }
+}
+
+/// Step timing the hook needs (rapier does not pass it).
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Clock {
+    pub time: f64,
+    pub dt: f64,
+    pub step: u32,
+}
+
+/// The stickslip contact modifier: implements rapier's [`PhysicsHooks`], replacing plain
+/// Coulomb friction by a [`stickslip_core::law::Law`] per collider, with vibration sources,
+/// and optionally wrapping the user's own hooks `H` (filters, one-way platforms, conveyors),
+/// which run first.
+///
+/// Per step: [`StickSlip::begin_step`], `pipeline.step(.., &modifier, ..)`,
+/// [`StickSlip::end_step`] — or [`StickSlip::step`] on a [`PhysicsWorld`], which does all three.
+pub struct StickSlip<H = ()> {
+    pub(crate) config: StickSlipConfig,
+    pub(crate) default_material: FrictionMaterial,
+    pub(crate) materials: ColliderMap<FrictionMaterial>,
+    pub(crate) vibrations: ColliderMap<VibrationSource>,
+    pub(crate) store: ContactStore,
+    pub(crate) clock: Clock,
+    pub(crate) inner: H,
+    reports: Vec<ContactReport>,
+    totals: WorldTotals,
+}
+
+impl StickSlip<()> {
+    /// A modifier whose contacts default to `material`.
+    pub fn new(material: impl Into<FrictionMaterial>) -> Self {
+        StickSlip::with_hooks(material, ())
+    }
+}
+
+impl<H: PhysicsHooks> StickSlip<H> {
+    /// A modifier wrapping the user's hooks `inner`.
+    pub fn with_hooks(material: impl Into<FrictionMaterial>, inner: H) -> Self {
+        StickSlip {
+            config: StickSlipConfig::default(),
+            default_material: material.into(),
+            materials: ColliderMap::default(),
+            vibrations: ColliderMap::default(),
+            store: ContactStore::default(),
+            clock: Clock::default(),
+            inner,
+            reports: Vec::new(),
+            totals: WorldTotals::default(),
+        }
+    }
+
+    /// Replaces the tuning.
+    pub fn with_config(mut self, config: StickSlipConfig) -> Result<Self, ParamError> {
+        config.validate()?;
+        self.config = config;
+        Ok(self)
+    }
+
+    /// The wrapped hooks.
+    pub fn inner(&self) -> &H {
+        &self.inner
+    }
+
+    /// The wrapped hooks, mutably.
+    pub fn inner_mut(&mut self) -> &mut H {
+        &mut self.inner
+    }
+
+    /// Opts `collider` in: turns on its `MODIFY_SOLVER_CONTACTS` hook and gives it
+    /// `material` (or the default when `None`).
+    pub fn attach(
+        &mut self,
+        colliders: &mut ColliderSet,
+        collider: ColliderHandle,
+        material: Option<FrictionMaterial>,
+    ) {
+        if let Some(c) = colliders.get_mut(collider) {
+            c.set_active_hooks(c.active_hooks() | ActiveHooks::MODIFY_SOLVER_CONTACTS);
+        }
+        match material {
+            Some(m) => {
+                self.materials.insert(collider, m);
+            }
+            None => {
+                self.materials.remove(collider);
+            }
+        }
+    }
+
+    /// Sets the material of a collider (its hook flag must be on, see [`Self::attach`]).
+    pub fn set_material(&mut self, collider: ColliderHandle, material: FrictionMaterial) {
+        self.materials.insert(collider, material);
+    }
+
+    /// Attaches a vibration source to a collider; its contacts feel it.
+    pub fn set_vibration(&mut self, collider: ColliderHandle, source: VibrationSource) {
+        self.vibrations.insert(collider, source);
+    }
+
+    /// Removes a collider's vibration source.
+    pub fn remove_vibration(&mut self, collider: ColliderHandle) -> Option<VibrationSource> {
+        self.vibrations.remove(collider)
+    }
+
+    /// The vibration source of a collider.
+    pub fn vibration(&self, collider: ColliderHandle) -> Option<&VibrationSource> {
+        self.vibrations.get(collider)
+    }
+
+    /// Call before each step with the step's parameters.
+    pub fn begin_step(&mut self, params: &IntegrationParameters) {
+        self.clock.dt = params.dt as f64;
+        self.clock.step = self.clock.step.wrapping_add(1);
+    }
+
+    /// Call after each step: drops the state of vanished contacts and builds the reports.
+    pub fn end_step(
+        &mut self,
+        narrow_phase: &NarrowPhase,
+        bodies: &RigidBodySet,
+        colliders: &ColliderSet,
+    ) {
+        self.store.sweep(self.clock.step);
+        self.reports.clear();
+        let dt = self.clock.dt;
+        let mut totals = WorldTotals {
+            dissipated_energy: self.totals.dissipated_energy,
+            ..WorldTotals::default()
+        };
+        for pair in narrow_phase.contact_pairs() {
+            for m in pair.solver_manifolds() {
+                let Some(rec) = self
+                    .store
+                    .get(m.data.user_data, pair.collider1, pair.collider2)
+                else {
+                    continue;
+                };
+                if m.data.solver_contacts.is_empty() || !(dt > 0.0) {
+                    continue;
+                }
+                let report = crate::hook::report(m, rec, bodies, colliders, dt);
+                totals.contacts += 1;
+                match report.regime {
+                    stickslip_core::law::Regime::Sticking => totals.sticking += 1,
+                    stickslip_core::law::Regime::StickSlip => totals.stick_slip += 1,
+                    stickslip_core::law::Regime::Sliding => totals.sliding += 1,
+                }
+                totals.normal_force += report.normal_force;
+                totals.friction_force += report.effective_mu() * report.normal_force;
+                totals.dissipated_power += report.dissipated_power;
+                self.reports.push(report);
+            }
+        }
+        totals.dissipated_energy += totals.dissipated_power * dt;
+        self.totals = totals;
+        self.clock.time += dt;
+    }
+
+    /// One step of `world` with this modifier (and no event handler of yours: pass one with
+    /// [`Self::step_with_events`]).
+    pub fn step(&mut self, world: &mut PhysicsWorld) {
+        self.step_with_events(world, &());
+    }
+
+    /// One step of `world` with this modifier and `events`.
+    pub fn step_with_events(&mut self, world: &mut PhysicsWorld, events: &dyn EventHandler) {
+        self.begin_step(&world.integration_parameters);
+        world.step_with_events(&*self, events);
+        self.end_step(&world.narrow_phase, &world.bodies, &world.colliders);
+    }
+
+    /// Per-contact reports of the last step.
+    pub fn reports(&self) -> &[ContactReport] {
+        &self.reports
+    }
+
+    /// World totals of the last step.
+    pub fn totals(&self) -> WorldTotals {
+        self.totals
+    }
+
+    /// Simulated time (s) at the end of the last step.
+    pub fn time(&self) -> f64 {
+        self.clock.time
+    }
+
+    /// Sets the simulated time (s), e.g. the phase origin of vibration sources.
+    pub fn set_time(&mut self, time: f64) {
+        self.clock.time = time;
+    }
+
+    /// Number of contacts with friction state.
+    pub fn active_contacts(&mut self) -> usize {
+        self.store.len()
+    }
+
+    /// Slots allocated for contact state (live or reusable): memory tracks this.
+    pub fn state_capacity(&mut self) -> usize {
+        self.store.capacity()
+    }
+}
