@@ -6,6 +6,7 @@
 
 mod block_cmd;
 mod output;
+mod run_cmd;
 mod theory_cmd;
 
 use clap::{Parser, Subcommand};
@@ -28,6 +29,8 @@ enum Command {
     Theory(theory_cmd::TheoryArgs),
     /// The seed's Example 1: a block under a time-dependent force, any law.
     Block(block_cmd::BlockArgs),
+    /// Run a scenario file headless; stream it to rerun (live viewer and/or .rrd file).
+    Run(run_cmd::RunArgs),
 }
 
 /// Errors a subcommand reports to the user.
@@ -45,6 +48,18 @@ pub enum CliError {
     /// Writing output failed.
     #[error("output failed: {0}")]
     Output(#[from] serde_json::Error),
+    /// A scenario file could not be read, parsed or validated.
+    #[error("{0}")]
+    Scenario(#[from] stickslip_scenario::ScenarioError),
+    /// A scenario could not be built into a world.
+    #[error("invalid scenario: {0}")]
+    Build(#[from] stickslip_scenario::BuildError),
+    /// Logging to rerun failed.
+    #[error("rerun: {0}")]
+    Rerun(#[from] stickslip_rerun::LogError),
+    /// A file operation failed.
+    #[error("{0}")]
+    Io(String),
 }
 
 fn main() -> ExitCode {
@@ -52,6 +67,7 @@ fn main() -> ExitCode {
     let result = match &cli.command {
         Command::Theory(args) => theory_cmd::run(args, cli.json),
         Command::Block(args) => block_cmd::run(args, cli.json),
+        Command::Run(args) => run_cmd::run(args, cli.json),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,271 @@
+//! [`Runner`]: steps a [`Scene`] (drivers, then the stickslip step) and keeps a [`Summary`].
+
+use crate::build::{DriverAction, Scene};
+use crate::spec::BodyKind;
+use rapier3d::prelude::*;
+use serde::Serialize;
+use stickslip_core::law::Regime;
+
+/// Steps a scene and collects statistics.
+pub struct Runner {
+    scene: Scene,
+    steps: u64,
+    regime_steps: RegimeCounts,
+    max_contacts: usize,
+}
+
+/// Contacts per regime.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
+pub struct RegimeCounts {
+    /// Sticking.
+    pub sticking: u64,
+    /// Stick-slip transition.
+    pub stick_slip: u64,
+    /// Sliding.
+    pub sliding: u64,
+}
+
+impl RegimeCounts {
+    /// Sum of the three.
+    pub fn total(&self) -> u64 {
+        self.sticking + self.stick_slip + self.sliding
+    }
+
+    fn add(&mut self, r: Regime) {
+        match r {
+            Regime::Sticking => self.sticking += 1,
+            Regime::StickSlip => self.stick_slip += 1,
+            Regime::Sliding => self.sliding += 1,
+        }
+    }
+}
+
+/// One body at the end of a run.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BodySummary {
+    /// Name.
+    pub name: String,
+    /// `fixed`, `dynamic` or `kinematic`.
+    pub kind: BodyKind,
+    /// Position minus start position (m).
+    pub displacement: [f64; 3],
+    /// |displacement| (m).
+    pub distance: f64,
+    /// Linear velocity (m/s).
+    pub velocity: [f64; 3],
+    /// |velocity| (m/s).
+    pub speed: f64,
+}
+
+/// What a run did.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Summary {
+    /// Scenario name.
+    pub scenario: String,
+    /// Steps taken.
+    pub steps: u64,
+    /// Simulated time (s).
+    pub sim_time: f64,
+    /// Time step (s).
+    pub dt: f64,
+    /// Stickslip contacts per regime after the last step.
+    pub contacts: RegimeCounts,
+    /// Contact-steps per regime summed over the run.
+    pub regime_steps: RegimeCounts,
+    /// Most stickslip contacts seen in one step.
+    pub max_contacts: usize,
+    /// Energy dissipated by stickslip friction (J).
+    pub dissipated_energy: f64,
+    /// Whether every body pose and velocity is finite.
+    pub finite: bool,
+    /// Non-fixed bodies.
+    pub bodies: Vec<BodySummary>,
+}
+
+impl Runner {
+    /// A runner at step 0 of `scene`.
+    pub fn new(scene: Scene) -> Self {
+        Runner {
+            scene,
+            steps: 0,
+            regime_steps: RegimeCounts::default(),
+            max_contacts: 0,
+        }
+    }
+
+    /// The scene.
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+
+    /// The scene, mutably (e.g. to change a vibration source between steps).
+    pub fn scene_mut(&mut self) -> &mut Scene {
+        &mut self.scene
+    }
+
+    /// Takes the scene back.
+    pub fn into_scene(self) -> Scene {
+        self.scene
+    }
+
+    /// Steps taken.
+    pub fn steps_done(&self) -> u64 {
+        self.steps
+    }
+
+    /// Simulated time (s).
+    pub fn time(&self) -> f64 {
+        self.scene.stickslip.time()
+    }
+
+    /// Applies the drivers at the current time, then steps the world with the modifier.
+    pub fn step(&mut self) {
+        let scene = &mut self.scene;
+        let t = scene.stickslip.time();
+        let dt = scene.world.integration_parameters.dt as f64;
+        apply_drivers(scene, t, dt);
+        scene.stickslip.step(&mut scene.world);
+        self.steps += 1;
+        let reports = scene.stickslip.reports();
+        self.max_contacts = self.max_contacts.max(reports.len());
+        for r in reports {
+            self.regime_steps.add(r.regime);
+        }
+    }
+
+    /// Takes `steps` steps, calling `after` after each one.
+    pub fn run_with(&mut self, steps: u64, mut after: impl FnMut(&Runner)) {
+        for _ in 0..steps {
+            self.step();
+            after(self);
+        }
+    }
+
+    /// Takes `steps` steps.
+    pub fn run(&mut self, steps: u64) {
+        self.run_with(steps, |_| {});
+    }
+
+    /// The statistics so far.
+    pub fn summary(&self) -> Summary {
+        let scene = &self.scene;
+        let mut contacts = RegimeCounts::default();
+        for r in scene.stickslip.reports() {
+            contacts.add(r.regime);
+        }
+        let mut finite = true;
+        let bodies = scene
+            .bodies
+            .iter()
+            .filter_map(|b| {
+                let body = scene.world.bodies.get(b.handle)?;
+                let p = body.translation();
+                let v = body.linvel();
+                finite &= p.is_finite() && v.is_finite() && body.rotation().is_finite();
+                (b.kind != BodyKind::Fixed).then(|| {
+                    let d = [
+                        p.x as f64 - b.start[0],
+                        p.y as f64 - b.start[1],
+                        p.z as f64 - b.start[2],
+                    ];
+                    let v = [v.x as f64, v.y as f64, v.z as f64];
+                    BodySummary {
+                        name: b.name.clone(),
+                        kind: b.kind,
+                        displacement: d,
+                        distance: norm(d),
+                        velocity: v,
+                        speed: norm(v),
+                    }
+                })
+            })
+            .collect();
+        Summary {
+            scenario: scene.name.clone(),
+            steps: self.steps,
+            sim_time: self.time(),
+            dt: scene.world.integration_parameters.dt as f64,
+            contacts,
+            regime_steps: self.regime_steps,
+            max_contacts: self.max_contacts,
+            dissipated_energy: scene.stickslip.totals().dissipated_energy,
+            finite,
+            bodies,
+        }
+    }
+}
+
+fn norm(v: [f64; 3]) -> f64 {
+    (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
+}
+
+fn apply_drivers(scene: &mut Scene, t: f64, dt: f64) {
+    // Forces persist in rapier until reset: clear the driven bodies' forces first.
+    for d in &scene.drivers {
+        if !matches!(d.action, DriverAction::Velocity { .. })
+            && let Some(b) = scene.world.bodies.get_mut(scene.bodies[d.body].handle)
+        {
+            b.reset_forces(false);
+            b.reset_torques(false);
+        }
+    }
+    let t_mid = t + 0.5 * dt;
+    for d in &scene.drivers {
+        let Some(body) = scene.world.bodies.get_mut(scene.bodies[d.body].handle) else {
+            continue;
+        };
+        match &d.action {
+            DriverAction::Velocity {
+                linear,
+                angular,
+                start,
+            } => {
+                let on = t + 1e-12 >= *start;
+                body.set_linvel(if on { *linear } else { Vector::ZERO }, true);
+                body.set_angvel(if on { *angular } else { Vector::ZERO }, true);
+            }
+            DriverAction::Spring {
+                stiffness,
+                damping,
+                anchor,
+                anchor_velocity,
+                point,
+                axis,
+            } => {
+                let p = body.position().transform_point(*point);
+                let v = body.velocity_at_point(p);
+                let mut f = [0.0f64; 3];
+                for k in 0..3 {
+                    let a = anchor[k] + anchor_velocity[k] * t;
+                    f[k] = stiffness * (a - p[k] as f64)
+                        + damping * (anchor_velocity[k] - v[k] as f64);
+                }
+                if let Some(e) = axis {
+                    let along = f[0] * e[0] + f[1] * e[1] + f[2] * e[2];
+                    f = [along * e[0], along * e[1], along * e[2]];
+                }
+                let force = Vector::new(f[0] as f32, f[1] as f32, f[2] as f32);
+                body.add_force_at_point(force, p, true);
+            }
+            DriverAction::Force {
+                direction,
+                profile,
+                point,
+            } => {
+                let m = profile.value(t_mid);
+                let force = Vector::new(
+                    (direction[0] * m) as f32,
+                    (direction[1] * m) as f32,
+                    (direction[2] * m) as f32,
+                );
+                match point {
+                    Some(local) => {
+                        let p = body.position().transform_point(*local);
+                        body.add_force_at_point(force, p, true);
+                    }
+                    None => body.add_force(force, true),
+                }
+            }
+        }
+    }
+}
