@@ -7,7 +7,8 @@
 //! `user_data` is reset every step — go through a map keyed by the collider pair and the
 //! first point's feature ids (which persist). Rapier does not report vanished manifolds, so
 //! [`ContactStore::sweep`] drops every record not touched during the step: memory tracks the
-//! active contacts, and a recycled slot gets a new generation so stale `user_data` never
+//! active contacts (manifolds of sleeping pairs, which rapier keeps, are touched by the
+//! modifier's end-of-step read-back and keep their state), and a recycled slot gets a new generation so stale `user_data` never
 //! reaches another contact's state.
 
 use rapier3d::prelude::{ColliderHandle, Vector};
@@ -178,12 +179,14 @@ impl ContactStore {
             })
     }
 
-    /// The live record `user_data` points at, if it belongs to the pair `(c1, c2)`.
-    pub fn get(
+    /// The live record `user_data` points at, if it belongs to the pair `(c1, c2)`; marks it
+    /// alive at `step` (a sleeping manifold keeps its state while rapier keeps the manifold).
+    pub fn touch(
         &mut self,
         user_data: u32,
         c1: ColliderHandle,
         c2: ColliderHandle,
+        step: u32,
     ) -> Option<&ContactRecord> {
         let (index, generation) = decode(user_data)?;
         let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
@@ -191,8 +194,14 @@ impl ContactStore {
             .get_mut(index as usize)?
             .get_mut()
             .unwrap_or_else(|e| e.into_inner());
-        (slot.live && slot.generation == generation && slot.record.c1 == c1 && slot.record.c2 == c2)
-            .then_some(&slot.record)
+        let ok = slot.live
+            && slot.generation == generation
+            && slot.record.c1 == c1
+            && slot.record.c2 == c2;
+        if ok {
+            slot.record.touched = step;
+        }
+        ok.then_some(&slot.record)
     }
 
     /// Number of live records.

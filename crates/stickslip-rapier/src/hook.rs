@@ -171,7 +171,7 @@ impl<H: PhysicsHooks> StickSlip<H> {
             return;
         };
         let basis = TangentBasis::new(*m.normal);
-        let (p, surface) = centroid(&m.solver_contacts);
+        let (p, surface) = centroid(m.solver_contacts);
         let slip_w = basis
             .tangential(point_velocity(bodies, rb2, p) - point_velocity(bodies, rb1, p) - surface);
         let slip: Vec2 = basis.project(slip_w);

@@ -15,7 +15,7 @@
 //! let ground = world.insert_collider(ColliderBuilder::cuboid(5.0, 0.1, 5.0), None);
 //! let (body, cube) = world.insert(
 //!     RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 0.35, 0.0)),
-//!     ColliderBuilder::cuboid(0.25, 0.25, 0.25),
+//!     ColliderBuilder::cuboid(0.25, 0.25, 0.25).density(1000.0),
 //! );
 //! // Elasto-plastic friction: c = 1e4 1/m, μ_ba = 0.5, μ_max = μ_ve = 0.55.
 //! let law = Law::elasto_plastic(1e4, 0.5, 0.55, Curve::constant(0.55).unwrap()).unwrap();
@@ -24,8 +24,9 @@
 //! for _ in 0..60 {
 //!     friction.step(&mut world);
 //! }
+//! // The read-back: the 125 kg box's weight rests on the contact, which sticks.
 //! let report = &friction.reports()[0];
-//! assert!((report.normal_force - 125.0 * 9.81).abs() < 0.05 * 125.0 * 9.81);
+//! assert!((report.normal_force - 125.0 * 9.81).abs() < 0.02 * 125.0 * 9.81);
 //! assert_eq!(report.regime, stickslip_core::law::Regime::Sticking);
 //! # let _ = (body, cube);
 //! ```
@@ -33,6 +34,8 @@
 //! See [`hook`](crate) docs in the source (`hook.rs`) for how the law maps onto rapier's
 //! per-manifold friction, and [`VibrationSource`] for vibration.
 #![warn(missing_docs)]
+// `!(x > 0.0)` is deliberate throughout: it rejects NaN along with non-positive values.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 mod collider_map;
 mod contact_store;

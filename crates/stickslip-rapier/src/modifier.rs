@@ -154,14 +154,14 @@ impl<H: PhysicsHooks> StickSlip<H> {
         self.clock.step = self.clock.step.wrapping_add(1);
     }
 
-    /// Call after each step: drops the state of vanished contacts and builds the reports.
+    /// Call after each step: builds the reports and drops the state of contacts whose
+    /// manifold rapier no longer holds (rapier never says when one disappears).
     pub fn end_step(
         &mut self,
         narrow_phase: &NarrowPhase,
         bodies: &RigidBodySet,
         colliders: &ColliderSet,
     ) {
-        self.store.sweep(self.clock.step);
         self.reports.clear();
         let dt = self.clock.dt;
         let mut totals = WorldTotals {
@@ -170,10 +170,12 @@ impl<H: PhysicsHooks> StickSlip<H> {
         };
         for pair in narrow_phase.contact_pairs() {
             for m in pair.solver_manifolds() {
-                let Some(rec) = self
-                    .store
-                    .get(m.data.user_data, pair.collider1, pair.collider2)
-                else {
+                let Some(rec) = self.store.touch(
+                    m.data.user_data,
+                    pair.collider1,
+                    pair.collider2,
+                    self.clock.step,
+                ) else {
                     continue;
                 };
                 if m.data.solver_contacts.is_empty() || !(dt > 0.0) {
@@ -192,6 +194,8 @@ impl<H: PhysicsHooks> StickSlip<H> {
                 self.reports.push(report);
             }
         }
+        // Everything rapier no longer holds a manifold for goes now.
+        self.store.sweep(self.clock.step);
         totals.dissipated_energy += totals.dissipated_power * dt;
         self.totals = totals;
         self.clock.time += dt;

@@ -49,7 +49,7 @@ use serde::{Deserialize, Serialize};
 
 /// Most plastic sub-steps per step (the implicit scheme is stable with one; more only refine
 /// the stick-slip transient).
-const MAX_PLASTIC_SUBSTEPS: usize = 16;
+const MAX_PLASTIC_SUBSTEPS: usize = 32;
 
 /// The elasto-plastic law with its parameters (validated).
 ///
@@ -230,9 +230,31 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
         let n = ((c * rest / (0.25 * band)).ceil() as usize).clamp(1, MAX_PLASTIC_SUBSTEPS);
         let hc = c * rest / n as f64;
         for _ in 0..n {
-            mu = self.implicit_substep(mu, e, hc, m);
+            mu = if self.stays_sliding(mu, e, m) {
+                // α = 1 along the whole way: the linear ODE's exact solution.
+                add(scale(e, m), scale(add(mu, scale(e, -m)), (-hc / m).exp()))
+            } else {
+                self.implicit_substep(mu, e, hc, m)
+            };
         }
         mu
+    }
+
+    /// Whether the straight path from `mu` towards `m·e` (the α = 1 solution) stays outside
+    /// the disc |μ| < μ_max, so α = 1 holds all along it.
+    fn stays_sliding(&self, mu: Vec2, e: Vec2, m: f64) -> bool {
+        if m < self.mu_max || norm(mu) < self.mu_max {
+            return false;
+        }
+        let target = scale(e, m);
+        let d = add(mu, scale(target, -1.0));
+        let dd = dot(d, d);
+        let lambda = if dd > 0.0 {
+            (-dot(target, d) / dd).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        norm(add(target, scale(d, lambda))) >= self.mu_max
     }
 
     /// One implicit Euler sub-step μ' = μ + hc (e − α(|μ'|) μ'/m): with q = μ + hc·e the
@@ -265,7 +287,7 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
 impl<C: SlidingCurve> FrictionLaw for ElastoPlastic<C> {
     fn step(&self, state: &mut FrictionState, input: &StepInput) -> StepOutput {
         let f_n = input.normal_force;
-        if !(f_n > 0.0 && f_n.is_finite()) || !(input.dt > 0.0) {
+        if !(f_n > 0.0 && f_n.is_finite() && input.dt > 0.0) {
             return unloaded(state);
         }
         let f_ref =
@@ -275,23 +297,27 @@ impl<C: SlidingCurve> FrictionLaw for ElastoPlastic<C> {
                 f_n
             };
         let k_t = self.c * f_ref;
+        let slip = normalize(input.slip)
+            .filter(|_| input.slip.iter().all(|x| x.is_finite()))
+            .map(|e| {
+                let path = norm(input.slip);
+                (e, path, self.curve.mu(path / input.dt))
+            });
+        // The cone the state can sit on: μ_max, or the sliding curve where it rises above.
+        let cone = slip.map_or(self.mu_max, |(_, _, m)| m.max(self.mu_max));
         // Load drop below what the spring carries: instantaneous slip onto the cone.
         let s_before = if state.force.iter().all(|x| x.is_finite()) {
             state.force
         } else {
             [0.0; 2]
         };
-        let s0 = clamp_norm(s_before, self.mu_max * f_n);
+        let s0 = clamp_norm(s_before, cone * f_n);
         let released = (dot(s_before, s_before) - dot(s0, s0)) / (2.0 * k_t);
         let mu0 = scale(s0, 1.0 / f_n);
 
-        let mu1 = match normalize(input.slip) {
-            Some(e) if input.slip.iter().all(|x| x.is_finite()) => {
-                let path = norm(input.slip);
-                let m = self.curve.mu(path / input.dt);
-                self.advance(mu0, e, path, k_t / f_n, m)
-            }
-            _ => mu0,
+        let mu1 = match slip {
+            Some((e, path, m)) => self.advance(mu0, e, path, k_t / f_n, m),
+            None => mu0,
         };
         let s1 = scale(mu1, f_n);
         state.force = s1;
@@ -325,6 +351,7 @@ impl<C: SlidingCurve> FrictionLaw for ElastoPlastic<C> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::law::Regime;
 
     fn law() -> ElastoPlastic {
         ElastoPlastic::new(1e4, 0.3, 0.4, Curve::constant(0.4).unwrap()).unwrap()
