@@ -37,8 +37,11 @@ pub(crate) struct ContactRecord {
     pub anchor2: Vector,
     /// The wrapped user hook's own `user_data` for this manifold (we own the field).
     pub inner_user_data: u32,
-    /// Step counter value of the last hook call (for the sweep).
-    pub touched: u32,
+    /// Mean normal force (N), low-pass filtered: sets the law's tangential stiffness.
+    pub mean_normal_force: f32,
+    /// Low 16 bits of the step counter at the last touch (for the sweep; every live record
+    /// is touched or swept each step, so wrapping is harmless).
+    pub touched: u16,
     /// Regime code (see `Regime`), 255 until the law has run.
     pub regime: u8,
     /// Whether the anchors are valid.
@@ -54,6 +57,7 @@ impl ContactRecord {
             anchor1: Vector::ZERO,
             anchor2: Vector::ZERO,
             inner_user_data: 0,
+            mean_normal_force: 0.0,
             touched: 0,
             regime: u8::MAX,
             anchored: false,
@@ -116,7 +120,7 @@ impl ContactStore {
         if let Some((index, generation)) = decode(*user_data)
             && let Some(mut slot) = try_slot(index, Some(generation))
         {
-            slot.record.touched = step;
+            slot.record.touched = step as u16;
             return f(&mut slot.record, false, *user_data);
         }
         let known = lock(&self.by_key).get(key).copied();
@@ -124,7 +128,7 @@ impl ContactStore {
             && let Some(mut slot) = try_slot(index, None)
         {
             *user_data = encode(index, slot.generation);
-            slot.record.touched = step;
+            slot.record.touched = step as u16;
             return f(&mut slot.record, false, *user_data);
         }
         drop(slots);
@@ -142,7 +146,7 @@ impl ContactStore {
         slot.generation = slot.generation.wrapping_add(1);
         slot.live = true;
         slot.record = ContactRecord::new(key);
-        slot.record.touched = step;
+        slot.record.touched = step as u16;
         lock(&self.by_key).insert(*key, index);
         *user_data = encode(index, slot.generation);
         f(&mut slot.record, true, *user_data)
@@ -155,7 +159,7 @@ impl ContactStore {
         let mut dropped = false;
         for (i, slot) in slots.iter_mut().enumerate() {
             let slot = slot.get_mut().unwrap_or_else(|e| e.into_inner());
-            if slot.live && slot.record.touched != step {
+            if slot.live && slot.record.touched != step as u16 {
                 slot.live = false;
                 free.push(i as u32);
                 dropped = true;
@@ -199,7 +203,7 @@ impl ContactStore {
             && slot.record.c1 == c1
             && slot.record.c2 == c2;
         if ok {
-            slot.record.touched = step;
+            slot.record.touched = step as u16;
         }
         ok.then_some(&slot.record)
     }

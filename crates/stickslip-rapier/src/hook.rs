@@ -16,8 +16,12 @@
 //!    displacement s⃗/(c F_n): sticking without creep.
 //!    **Slipping**: the law integrates the slip Δg⃗ = ġ dt (EP: exact/implicit, bounded for
 //!    any c and dt) and the anchor follows.
-//! 3. The solver's friction limit is the law's limit (EP: max(|μ⃗|, μ_ba); Phys: μ_ba holding,
-//!    μ_ve sliding; Regul: μ(ġ); Coulomb: μ), scaled by the vibration source.
+//! 3. The solver's friction limit: holding, the law's capacity before it yields (EP:
+//!    max(|μ⃗|, μ_ba); Phys: μ_ba; Coulomb: μ); slipping, the law's own coefficient |μ⃗| after
+//!    the step (EP: its state, so a contact dragged across a surface feels the law's elastic
+//!    loading and yielding, Popov's stick-slip included; Phys: μ_ve(|ġ|); Regul: μ(ġ)),
+//!    scaled by the vibration source. The tangential stiffness uses a low-pass filtered mean
+//!    normal force (`stiffness_time`), so a vibrating load changes the limit, not k_t.
 //!
 //! The law is realized through the solver's friction limit and target velocity, never as an
 //! explicit spring force, so no stiffness c can destabilize the step.
@@ -194,6 +198,14 @@ impl<H: PhysicsHooks> StickSlip<H> {
                 limit *= static_factor(s, limit, None, t_mid);
             }
         } else {
+            // Mean normal force for the tangential stiffness: filtered, seeded at first load.
+            let f_mean = if rec.mean_normal_force > 0.0 {
+                let w = (dt / self.config.stiffness_time).min(1.0);
+                rec.mean_normal_force as f64 + w * (f_n - rec.mean_normal_force as f64)
+            } else {
+                f_n
+            };
+            rec.mean_normal_force = f_mean as f32;
             let vib = source.map_or(Vibrated { normal_factor: 1.0 }, |s| {
                 normal_modulation(s, f_n, t_mid)
             });
@@ -212,7 +224,7 @@ impl<H: PhysicsHooks> StickSlip<H> {
                 },
                 dt,
                 normal_force: f_eff,
-                stiffness_normal_force: f_n,
+                stiffness_normal_force: f_mean,
             };
             let out = law.step(&mut state, &input);
             rec.force = basis.lift(state.force);
@@ -221,7 +233,14 @@ impl<H: PhysicsHooks> StickSlip<H> {
             } else {
                 out.regime
             });
-            limit = out.limit * vib.normal_factor;
+            // Holding: the law's capacity before it yields. Slipping: the law is resolved by
+            // the step, so the solver applies exactly the law's force |μ⃗| F_n.
+            let mu_law = if holding {
+                out.limit
+            } else {
+                vec2::norm(out.mu)
+            };
+            limit = mu_law * vib.normal_factor;
             if let Some(s) = source {
                 limit = in_plane_limit(s, limit, f_n, &basis, out.mu, slip, t_mid, holding, law);
             }

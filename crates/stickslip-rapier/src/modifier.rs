@@ -20,6 +20,10 @@ pub struct StickSlipConfig {
     /// Fraction of a holding contact's drift from its stick anchor corrected per step
     /// (through the solver's target tangent velocity); 0 turns anchoring off.
     pub anchor_gain: f64,
+    /// Averaging time (s) of the mean normal force F̄ that sets a compliant law's tangential
+    /// stiffness k_t = c·F̄. Keep it longer than vibration periods so that a vibrating load
+    /// changes the friction limit but not the stiffness (Popov's constant k_x).
+    pub stiffness_time: f64,
 }
 
 impl Default for StickSlipConfig {
@@ -27,6 +31,7 @@ impl Default for StickSlipConfig {
         StickSlipConfig {
             stick_speed: 1e-3,
             anchor_gain: 0.5,
+            stiffness_time: 0.2,
         }
     }
 }
@@ -36,6 +41,7 @@ impl StickSlipConfig {
     pub fn validate(&self) -> Result<(), ParamError> {
         positive("stick_speed", self.stick_speed)?;
         in_range("anchor_gain", self.anchor_gain, 0.0, 1.0)?;
+        positive("stiffness_time", self.stiffness_time)?;
         Ok(())
     }
 }
