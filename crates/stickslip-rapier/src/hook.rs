@@ -182,7 +182,9 @@ impl<H: PhysicsHooks> StickSlip<H> {
         let speed = vec2::norm(slip);
         let meas = measure(m.manifold, dt);
         let f_n = meas.normal_force;
-        let holding = speed < self.config.stick_speed && !matches!(law, Law::Regularized(_));
+        // Slow enough to be held by the rigid friction constraint (Regul never holds).
+        let slow = speed < self.config.stick_speed && !matches!(law, Law::Regularized(_));
+        let mut holding = slow;
         let t_mid = self.clock.time + 0.5 * dt;
 
         let mut limit;
@@ -210,23 +212,30 @@ impl<H: PhysicsHooks> StickSlip<H> {
                 normal_modulation(s, f_n, t_mid)
             });
             let f_eff = f_n * vib.normal_factor;
-            let mut state = FrictionState {
-                force: basis.project(rec.force),
-            };
-            if holding {
-                state.force = vec2::scale(basis.project(meas.mu), f_n);
-            }
-            let input = StepInput {
-                slip: if holding {
-                    [0.0; 2]
-                } else {
-                    vec2::scale(slip, dt)
-                },
+            let measured = vec2::scale(basis.project(meas.mu), f_n);
+            let input = |slip: Vec2| StepInput {
+                slip,
                 dt,
                 normal_force: f_eff,
                 stiffness_normal_force: f_mean,
             };
-            let out = law.step(&mut state, &input);
+            // Holding: the law's state is what the constraint carried (read back).
+            let mut state = FrictionState { force: measured };
+            let mut out = law.step(&mut state, &input([0.0; 2]));
+            // A constraint that hit the law's capacity last step has yielded (break-away),
+            // however slow the slip still is: from here the law integrates the slip.
+            let saturated = vec2::norm(measured) >= 0.999 * out.limit * f_n && speed > 0.0;
+            holding = slow && !saturated;
+            if !holding {
+                state = FrictionState {
+                    force: if slow {
+                        measured
+                    } else {
+                        basis.project(rec.force)
+                    },
+                };
+                out = law.step(&mut state, &input(vec2::scale(slip, dt)));
+            }
             rec.force = basis.lift(state.force);
             rec.regime = regime_code(if holding && out.regime == Regime::Sliding {
                 Regime::StickSlip
@@ -251,9 +260,10 @@ impl<H: PhysicsHooks> StickSlip<H> {
         let d_el = elastic_displacement(law, rec.force, f_n);
         let (pose1, pose2) = (col1.position(), col2.position());
         if holding && rec.anchored && self.config.anchor_gain > 0.0 {
-            let drift = basis.tangential(
-                pose2.transform_point(rec.anchor2) - pose1.transform_point(rec.anchor1),
-            ) - d_el;
+            // A moving surface (conveyor hooks) carries collider 1's anchor along.
+            let a1 = pose1.transform_point(rec.anchor1) + surface * dt as f32;
+            rec.anchor1 = pose1.inverse_transform_point(a1);
+            let drift = basis.tangential(pose2.transform_point(rec.anchor2) - a1) - d_el;
             let v_corr = drift * (-(self.config.anchor_gain / dt) as f32);
             for c in m.solver_contacts.iter_mut() {
                 c.tangent_velocity += v_corr;

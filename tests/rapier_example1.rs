@@ -1,0 +1,81 @@
+//! The seed's Example 1 in a real rapier world: a box on the ground under F(t) through
+//! sticking just below break-away, stick-slip then sliding, and slip-stick back to rest.
+//! Invariants: with the elasto-plastic contact the box does not move in phase I (within
+//! g_ba = μ_ba/c), it is at rest again at the end, and its final displacement is within 2 %
+//! of the core's exact switched (Phys) ODE reference.
+
+use rapier3d::prelude::*;
+use stickslip::core::block::{Block, ForceProfile, Integrator, Tolerances, simulate};
+use stickslip::core::law::{Law, Physical};
+use stickslip::core::sliding_curve::Curve;
+use stickslip::rapier::{FrictionMaterial, StickSlip};
+
+const MU_BA: f64 = 0.3;
+const MU_MAX: f64 = 0.32;
+const C: f64 = 1e4;
+const G: f64 = 9.81;
+
+#[test]
+fn example1_in_rapier_follows_the_exact_switched_reference() {
+    let mass = 1.0;
+    let profile = ForceProfile::example1(MU_BA * mass * G, 0.95, 1.5).unwrap();
+    let curve = Curve::constant(MU_MAX).unwrap();
+    let reference = simulate(
+        &Block::new(
+            mass,
+            G,
+            Law::Physical(Physical::new(MU_BA, curve.clone()).unwrap()),
+        )
+        .unwrap(),
+        &profile,
+        Integrator::Explicit,
+        Tolerances::default(),
+        &[1.0, 3.0],
+    )
+    .unwrap();
+
+    let dt = 1.0 / 240.0;
+    let mut world = PhysicsWorld::default();
+    world.integration_parameters.dt = dt as f32;
+    let ground = world.insert_collider(ColliderBuilder::cuboid(20.0, 0.1, 5.0), None);
+    let half = 0.1f32;
+    let (body, _) = world.insert(
+        RigidBodyBuilder::dynamic()
+            .translation(Vector::new(0.0, 0.1 + half, 0.0))
+            .can_sleep(false)
+            .enabled_rotations(false, false, false),
+        ColliderBuilder::cuboid(half, half, half).density(mass as f32 / (8.0 * half * half * half)),
+    );
+    let law = Law::elasto_plastic(C, MU_BA, MU_MAX, curve).unwrap();
+    let mut modifier = StickSlip::new(FrictionMaterial::new(law));
+    modifier.attach(&mut world.colliders, ground, None);
+    // Settle on the ground first, then t = 0.
+    for _ in 0..24 {
+        modifier.step(&mut world);
+    }
+    let x0 = world.bodies[body].translation().x as f64;
+    let steps = (3.0 / dt).round() as usize;
+    let mut max_phase1: f64 = 0.0;
+    for k in 0..steps {
+        let t_mid = (k as f64 + 0.5) * dt;
+        let b = &mut world.bodies[body];
+        b.reset_forces(true);
+        b.add_force(Vector::new(profile.value(t_mid) as f32, 0.0, 0.0), true);
+        modifier.step(&mut world);
+        let x = world.bodies[body].translation().x as f64 - x0;
+        if (k as f64 + 1.0) * dt <= 1.0 {
+            max_phase1 = max_phase1.max(x.abs());
+        }
+    }
+    let x_end = world.bodies[body].translation().x as f64 - x0;
+    let v_end = world.bodies[body].linvel().x as f64;
+    let x_ref = reference.final_displacement();
+    println!(
+        "phase I max |x| {max_phase1:.2e} m (g_ba {:.1e}); final x {x_end:.5} m vs Phys {x_ref:.5} m ({:+.2} %), v_end {v_end:.1e}",
+        MU_BA / C,
+        100.0 * (x_end - x_ref) / x_ref
+    );
+    assert!(max_phase1 <= MU_BA / C, "moved {max_phase1} in phase I");
+    assert!(v_end.abs() < 1e-3, "still moving: {v_end}");
+    assert!(((x_end - x_ref) / x_ref).abs() < 0.02, "{x_end} vs {x_ref}");
+}
