@@ -222,7 +222,12 @@ fn dragged_mu_bar(w: &Waveform, alpha: f64, beta: f64) -> f64 {
 #[test]
 fn modulated_normal_force_reproduces_popov() {
     let alpha = 0.5;
-    for w in [Waveform::Sine, Waveform::SawtoothRight, Waveform::SawtoothLeft, Waveform::Square] {
+    for w in [
+        Waveform::Sine,
+        Waveform::SawtoothRight,
+        Waveform::SawtoothLeft,
+        Waveform::Square,
+    ] {
         let bc = w.beta_c();
         let betas = if bc.is_finite() {
             vec![0.1 * bc, 0.4 * bc, 0.8 * bc, 1.5 * bc]
