@@ -245,6 +245,11 @@ impl<H: PhysicsHooks> StickSlip<H> {
         self.store.len()
     }
 
+    /// Bytes of friction state kept per active contact manifold (the per-contact record:
+    /// law state, stick anchors, bookkeeping).
+    pub const STATE_BYTES_PER_CONTACT: usize =
+        std::mem::size_of::<crate::contact_store::ContactRecord>();
+
     /// Slots allocated for contact state (live or reusable): memory tracks this.
     pub fn state_capacity(&mut self) -> usize {
         self.store.capacity()
