@@ -8,31 +8,8 @@
 use rapier3d::prelude::*;
 use stickslip::core::law::{Coulomb, Law, Physical};
 use stickslip::core::sliding_curve::Curve;
+use stickslip::rapier::scenes::{BoxOnGround, Conveyor};
 use stickslip::rapier::{FrictionMaterial, StickSlip};
-
-/// The user's conveyor: the belt collider's surface moves at `velocity`.
-struct Conveyor {
-    belt: ColliderHandle,
-    velocity: Vector,
-}
-
-impl PhysicsHooks for Conveyor {
-    fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
-        // tangent_velocity is the target velocity of collider 2 relative to collider 1.
-        let v = if ctx.collider1 == self.belt {
-            self.velocity
-        } else if ctx.collider2 == self.belt {
-            -self.velocity
-        } else {
-            return;
-        };
-        if let Some(m) = ctx.rigid_mut() {
-            for c in m.solver_contacts.iter_mut() {
-                c.tangent_velocity = v;
-            }
-        }
-    }
-}
 
 const M: f64 = 1.0;
 const K: f64 = 100.0;
@@ -44,33 +21,28 @@ const G: f64 = 9.81;
 /// Stick onset times of the block riding the belt under `law`.
 fn stick_onsets(law: Law, seconds: f64) -> Vec<f64> {
     let dt = 1.0 / 480.0;
-    let mut world = PhysicsWorld::default();
-    world.integration_parameters.dt = dt as f32;
-    let belt = world.insert_collider(ColliderBuilder::cuboid(20.0, 0.1, 5.0), None);
-    let half = 0.1f32;
-    let (body, _) = world.insert(
-        RigidBodyBuilder::dynamic()
-            .translation(Vector::new(0.0, 0.1 + half, 0.0))
-            .can_sleep(false)
-            .enabled_rotations(false, false, false),
-        ColliderBuilder::cuboid(half, half, half).density(M as f32 / (8.0 * half * half * half)),
-    );
+    let mut scene = BoxOnGround {
+        half: 0.1,
+        mass: M as f32,
+        dt: dt as f32,
+        rotations: false,
+        ..BoxOnGround::default()
+    }
+    .build();
+    // The user's own hook: the ground is a belt moving at v_b.
     let conveyor = Conveyor {
-        belt,
+        belt: scene.ground,
         velocity: Vector::new(V_B as f32, 0.0, 0.0),
     };
     let mut modifier = StickSlip::with_hooks(FrictionMaterial::new(law), conveyor);
-    modifier.attach(&mut world.colliders, belt, None);
-    world.colliders[belt].set_active_hooks(ActiveHooks::MODIFY_SOLVER_CONTACTS);
+    modifier.attach(&mut scene.world.colliders, scene.ground, None);
     let mut onsets = Vec::new();
     let mut was_stuck = false;
     for k in 0..(seconds / dt) as usize {
-        let b = &mut world.bodies[body];
-        let x = b.translation().x as f64;
-        b.reset_forces(true);
-        b.add_force(Vector::new((-K * x) as f32, 0.0, 0.0), true);
-        modifier.step(&mut world);
-        let v = world.bodies[body].linvel().x as f64;
+        let x = scene.x();
+        scene.set_force(Vector::new((-K * x) as f32, 0.0, 0.0));
+        modifier.step(&mut scene.world);
+        let v = scene.vx();
         let stuck = (v - V_B).abs() < 1e-3;
         if stuck && !was_stuck && k > 0 {
             onsets.push((k + 1) as f64 * dt);

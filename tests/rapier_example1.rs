@@ -8,6 +8,7 @@ use rapier3d::prelude::*;
 use stickslip::core::block::{Block, ForceProfile, Integrator, Tolerances, simulate};
 use stickslip::core::law::{Law, Physical};
 use stickslip::core::sliding_curve::Curve;
+use stickslip::rapier::scenes::BoxOnGround;
 use stickslip::rapier::{FrictionMaterial, StickSlip};
 
 const MU_BA: f64 = 0.3;
@@ -35,40 +36,35 @@ fn example1_in_rapier_follows_the_exact_switched_reference() {
     .unwrap();
 
     let dt = 1.0 / 240.0;
-    let mut world = PhysicsWorld::default();
-    world.integration_parameters.dt = dt as f32;
-    let ground = world.insert_collider(ColliderBuilder::cuboid(20.0, 0.1, 5.0), None);
-    let half = 0.1f32;
-    let (body, _) = world.insert(
-        RigidBodyBuilder::dynamic()
-            .translation(Vector::new(0.0, 0.1 + half, 0.0))
-            .can_sleep(false)
-            .enabled_rotations(false, false, false),
-        ColliderBuilder::cuboid(half, half, half).density(mass as f32 / (8.0 * half * half * half)),
-    );
+    let mut scene = BoxOnGround {
+        half: 0.1,
+        mass: mass as f32,
+        dt: dt as f32,
+        rotations: false,
+        ..BoxOnGround::default()
+    }
+    .build();
     let law = Law::elasto_plastic(C, MU_BA, MU_MAX, curve).unwrap();
     let mut modifier = StickSlip::new(FrictionMaterial::new(law));
-    modifier.attach(&mut world.colliders, ground, None);
+    modifier.attach(&mut scene.world.colliders, scene.ground, None);
     // Settle on the ground first, then t = 0.
     for _ in 0..24 {
-        modifier.step(&mut world);
+        modifier.step(&mut scene.world);
     }
-    let x0 = world.bodies[body].translation().x as f64;
+    let x0 = scene.x();
     let steps = (3.0 / dt).round() as usize;
     let mut max_phase1: f64 = 0.0;
     for k in 0..steps {
         let t_mid = (k as f64 + 0.5) * dt;
-        let b = &mut world.bodies[body];
-        b.reset_forces(true);
-        b.add_force(Vector::new(profile.value(t_mid) as f32, 0.0, 0.0), true);
-        modifier.step(&mut world);
-        let x = world.bodies[body].translation().x as f64 - x0;
+        scene.set_force(Vector::new(profile.value(t_mid) as f32, 0.0, 0.0));
+        modifier.step(&mut scene.world);
+        let x = scene.x() - x0;
         if (k as f64 + 1.0) * dt <= 1.0 {
             max_phase1 = max_phase1.max(x.abs());
         }
     }
-    let x_end = world.bodies[body].translation().x as f64 - x0;
-    let v_end = world.bodies[body].linvel().x as f64;
+    let x_end = scene.x() - x0;
+    let v_end = scene.vx();
     let x_ref = reference.final_displacement();
     println!(
         "phase I max |x| {max_phase1:.2e} m (g_ba {:.1e}); final x {x_end:.5} m vs Phys {x_ref:.5} m ({:+.2} %), v_end {v_end:.1e}",

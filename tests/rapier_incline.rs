@@ -4,13 +4,19 @@
 //! beside them); above the angle the box slides with a = g (sin θ − μ_k cos θ) within 2 %,
 //! μ_k being the law's steady sliding coefficient.
 
-mod common;
-
-use common::{incline, x_of};
 use rapier3d::prelude::*;
 use stickslip::core::law::{Coulomb, FrictionLaw, Law, Regularization, Regularized};
 use stickslip::core::sliding_curve::Curve;
+use stickslip::rapier::scenes::BoxOnGround;
 use stickslip::rapier::{FrictionMaterial, StickSlip};
+
+fn incline(theta: f64) -> stickslip::rapier::scenes::BoxScene {
+    BoxOnGround {
+        incline: theta,
+        ..BoxOnGround::default()
+    }
+    .build()
+}
 
 const MU_BA: f64 = 0.5;
 const MU_MAX: f64 = 0.55;
@@ -24,7 +30,8 @@ fn ep() -> Law {
 /// Displacement along the slope after settling 1 s then 10 s more, with `law` (None: plain
 /// rapier with collider friction `mu`), and the last friction report's (state μ, effective μ).
 fn creep(law: Option<Law>, theta: f64, mu: f32) -> (f64, Option<(f64, f64)>) {
-    let (mut world, body, ground) = incline(theta, 0.25);
+    let scene = incline(theta);
+    let (mut world, body, ground) = (scene.world, scene.body, scene.ground);
     for (_, c) in world.colliders.iter_mut() {
         c.set_friction(mu);
     }
@@ -33,6 +40,8 @@ fn creep(law: Option<Law>, theta: f64, mu: f32) -> (f64, Option<(f64, f64)>) {
         m.attach(&mut world.colliders, ground, None);
         m
     });
+    let x_of =
+        |world: &PhysicsWorld, body: RigidBodyHandle| world.bodies[body].translation().x as f64;
     let mut step = |world: &mut PhysicsWorld| match modifier.as_mut() {
         Some(m) => m.step(world),
         None => world.step(),
@@ -95,20 +104,20 @@ fn slides_above_break_away_with_kinetic_acceleration() {
     let g = 9.81;
     for law in [ep(), Law::Coulomb(Coulomb::new(MU_MAX).unwrap())] {
         let mu_k = law.sliding_coefficient(1.0);
-        let (mut world, body, ground) = incline(theta, 0.25);
+        let mut scene = incline(theta);
         let mut m = StickSlip::new(FrictionMaterial::new(law.clone()));
-        m.attach(&mut world.colliders, ground, None);
+        m.attach(&mut scene.world.colliders, scene.ground, None);
         // Let the contact form, then measure x(t) over 1 s of sliding.
         for _ in 0..10 {
-            m.step(&mut world);
+            m.step(&mut scene.world);
         }
-        let (x0, v0) = (x_of(&world, body), world.bodies[body].linvel().x as f64);
+        let (x0, v0) = (scene.x(), scene.vx());
         let steps = 60;
         for _ in 0..steps {
-            m.step(&mut world);
+            m.step(&mut scene.world);
         }
         let t = steps as f64 / 60.0;
-        let a = 2.0 * (x_of(&world, body) - x0 - v0 * t) / (t * t);
+        let a = 2.0 * (scene.x() - x0 - v0 * t) / (t * t);
         let expect = g * (theta.sin() - mu_k * theta.cos());
         println!("{}: a = {a:.4}, expected {expect:.4}", law.name());
         assert!(

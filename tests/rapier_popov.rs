@@ -16,6 +16,7 @@ use stickslip::core::law::Law;
 use stickslip::core::popov;
 use stickslip::core::sliding_curve::Curve;
 use stickslip::core::waveform::Waveform;
+use stickslip::rapier::scenes::BoxOnGround;
 use stickslip::rapier::{
     Amplitude, FrictionMaterial, StickSlip, StickSlipConfig, VibrationDirection, VibrationMode,
     VibrationSource,
@@ -49,19 +50,16 @@ struct Scene {
 }
 
 fn scene(dt: f32, mass: f32, stick_speed: f64) -> Scene {
-    let mut world = PhysicsWorld::default();
-    world.gravity = Vector::ZERO;
-    world.integration_parameters.dt = dt;
-    let plate = world.insert_collider(ColliderBuilder::cuboid(100.0, 0.1, 5.0), None);
-    let half = 0.1f32;
-    let volume = 8.0 * half * half * half;
-    let (body, _) = world.insert(
-        RigidBodyBuilder::dynamic()
-            .translation(Vector::new(0.0, 0.1 + half, 0.0))
-            .can_sleep(false)
-            .enabled_rotations(false, false, false),
-        ColliderBuilder::cuboid(half, half, half).density(mass / volume),
-    );
+    let box_scene = BoxOnGround {
+        half: 0.1,
+        mass,
+        gravity: 0.0,
+        dt,
+        rotations: false,
+        ..BoxOnGround::default()
+    }
+    .build();
+    let mut world = box_scene.world;
     let law = Law::elasto_plastic(C, MU0, MU0, Curve::constant(MU0).unwrap()).unwrap();
     let config = StickSlipConfig {
         stiffness_time: STIFFNESS_TIME,
@@ -71,12 +69,12 @@ fn scene(dt: f32, mass: f32, stick_speed: f64) -> Scene {
     let mut modifier = StickSlip::new(FrictionMaterial::new(law))
         .with_config(config)
         .unwrap();
-    modifier.attach(&mut world.colliders, plate, None);
+    modifier.attach(&mut world.colliders, box_scene.ground, None);
     Scene {
         world,
         modifier,
-        body,
-        plate,
+        body: box_scene.body,
+        plate: box_scene.ground,
     }
 }
 

@@ -43,6 +43,7 @@ mod hook;
 mod material;
 mod modifier;
 mod report;
+pub mod scenes;
 mod tangent;
 mod vibration;
 
