@@ -335,3 +335,12 @@ fn print_table(r: &RunReport<'_>) {
         );
     }
 }
+
+/// Fixed notation for ordinary magnitudes, scientific otherwise.
+fn number(x: f64) -> String {
+    if x == 0.0 || (1e-3..1e6).contains(&x.abs()) {
+        format!("{x:.6}")
+    } else {
+        format!("{x:.4e}")
+    }
+}
