@@ -1,8 +1,8 @@
 //! A box on an incline in a real rapier world. Invariants: at 0.95 of the break-away angle
 //! (tan θ = 0.95 μ_ba) the elasto-plastic contact keeps the box within g_ba = μ_ba/c of its
-//! start over 10 s, while the regularized law creeps (and plain rapier Coulomb is measured
-//! beside them); above the angle the box slides with a = g (sin θ − μ_k cos θ) within 2 %,
-//! μ_k being the law's steady sliding coefficient.
+//! start over 10 s, while the regularized law creeps at its steady speed ġ_t0 tan θ/μ_ve
+//! within 2 % (plain rapier Coulomb is measured beside them); above the angle the box slides
+//! with a = g (sin θ − μ_k cos θ) within 2 %, μ_k being the law's steady sliding coefficient.
 
 use rapier3d::prelude::*;
 use stickslip::core::law::{Coulomb, FrictionLaw, Law, Regularization, Regularized};
@@ -95,6 +95,12 @@ fn sticks_below_break_away_without_creep() {
     assert!(
         regul_creep > 100.0 * g_ba,
         "Regul should creep, moved {regul_creep}"
+    );
+    // Regul creeps at its steady speed ġ_t0 · tan θ / μ_ve (the law has no sticking).
+    let expect = 0.01 * theta.tan() / MU_MAX * (DT_STEPS as f64 / 60.0);
+    assert!(
+        ((regul_creep - expect) / expect).abs() < 0.02,
+        "Regul creep {regul_creep} vs {expect}"
     );
 }
 

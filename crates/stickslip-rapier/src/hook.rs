@@ -33,6 +33,7 @@ use crate::tangent::TangentBasis;
 use crate::vibration::{VibrationDirection, VibrationMode, VibrationSource};
 use rapier3d::prelude::*;
 use stickslip_core::law::{FrictionLaw, FrictionState, Law, Regime, StepInput};
+use stickslip_core::sliding_curve::SlidingCurve;
 use stickslip_core::vec2::{self, Vec2};
 
 fn regime_code(r: Regime) -> u8 {
@@ -252,6 +253,22 @@ impl<H: PhysicsHooks> StickSlip<H> {
             limit = mu_law * vib.normal_factor;
             if let Some(s) = source {
                 limit = in_plane_limit(s, limit, f_n, &basis, out.mu, slip, t_mid, holding, law);
+            }
+        }
+        // Regul has no sticking: realized implicitly, the solver gets the full sliding level
+        // and a target slip velocity equal to the law's creep speed under the load it carried,
+        // ġ = ġ_t0 r⁻¹(|μ_meas|/μ_ve) along the load; at equilibrium that is exactly Regul.
+        if let Law::Regularized(l) = law
+            && f_n > 0.0
+        {
+            let mu_meas = basis.project(meas.mu);
+            let ratio = vec2::norm(mu_meas);
+            limit = l.curve().mu(speed);
+            if let Some(dir) = vec2::normalize(mu_meas) {
+                let creep = basis.lift(vec2::scale(dir, l.creep_speed(ratio, speed)));
+                for c in m.solver_contacts.iter_mut() {
+                    c.tangent_velocity += creep;
+                }
             }
         }
         *m.friction = limit.max(0.0) as f32;

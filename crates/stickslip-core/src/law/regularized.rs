@@ -30,6 +30,17 @@ impl Regularization {
             Regularization::Tanh => x.tanh(),
         }
     }
+
+    /// The inverse r⁻¹(y) for y in [0, 1): the normalized creep speed under a load y·μ F_n
+    /// (capped just below full sliding for the asymptotic tanh).
+    #[inline]
+    pub fn inverse(self, y: f64) -> f64 {
+        let y = y.clamp(0.0, 1.0);
+        match self {
+            Regularization::Linear => y,
+            Regularization::Tanh => y.min(1.0 - 1e-9).atanh(),
+        }
+    }
 }
 
 /// The regularized model.
@@ -87,6 +98,17 @@ impl Regularized {
     /// The sliding curve.
     pub fn curve(&self) -> &Curve {
         &self.curve
+    }
+
+    /// The ramp shape.
+    pub fn shape(&self) -> Regularization {
+        self.shape
+    }
+
+    /// Steady creep speed under a tangential load of `ratio` = F_et/F_n at slip speed scale
+    /// `speed` (for the sliding curve): ġ_t0 · r⁻¹(ratio/μ_ve).
+    pub fn creep_speed(&self, ratio: f64, speed: f64) -> f64 {
+        self.v_reg * self.shape.inverse(ratio.abs() / self.curve.mu(speed))
     }
 
     /// Signed coefficient μ(ġ) in 1D.
