@@ -63,4 +63,19 @@ fn main() {
             }
         }
     }
+    // The same Example 1 in a rapier world with the EP contact (the reference: Phys above).
+    for dt in [1.0 / 60.0, 1.0 / 240.0] {
+        let law = Law::elasto_plastic(c, mu_ba, mu_max, curve.clone()).expect("valid EP");
+        let (xs, v_end) = stickslip::rapier::scenes::example1(law, &profile, dt, &[1.0, 2.0, 3.0]);
+        println!(
+            "{:<6} {:<9} {:>12.4e} {:>12.6} {:>12.6} {:>9.2e}   (rapier, dt = 1/{:.0} s)",
+            "ep",
+            "rapier",
+            xs[0],
+            xs[1],
+            xs[2],
+            v_end,
+            1.0 / dt
+        );
+    }
 }

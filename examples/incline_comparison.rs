@@ -5,7 +5,6 @@
 //!
 //! Run: `cargo run --release --example incline_comparison`
 
-use rapier3d::prelude::*;
 use stickslip::core::law::{Coulomb, FrictionLaw, Law, Physical, Regularization, Regularized};
 use stickslip::core::sliding_curve::Curve;
 use stickslip::rapier::scenes::BoxOnGround;

@@ -4,12 +4,10 @@
 //! g_ba = μ_ba/c), it is at rest again at the end, and its final displacement is within 2 %
 //! of the core's exact switched (Phys) ODE reference.
 
-use rapier3d::prelude::*;
 use stickslip::core::block::{Block, ForceProfile, Integrator, Tolerances, simulate};
 use stickslip::core::law::{Law, Physical};
 use stickslip::core::sliding_curve::Curve;
-use stickslip::rapier::scenes::BoxOnGround;
-use stickslip::rapier::{FrictionMaterial, StickSlip};
+use stickslip::rapier::scenes::example1;
 
 const MU_BA: f64 = 0.3;
 const MU_MAX: f64 = 0.32;
@@ -36,35 +34,16 @@ fn example1_in_rapier_follows_the_exact_switched_reference() {
     .unwrap();
 
     let dt = 1.0 / 240.0;
-    let mut scene = BoxOnGround {
-        half: 0.1,
-        mass: mass as f32,
-        dt: dt as f32,
-        rotations: false,
-        ..BoxOnGround::default()
-    }
-    .build();
     let law = Law::elasto_plastic(C, MU_BA, MU_MAX, curve).unwrap();
-    let mut modifier = StickSlip::new(FrictionMaterial::new(law));
-    modifier.attach(&mut scene.world.colliders, scene.ground, None);
-    // Settle on the ground first, then t = 0.
-    for _ in 0..24 {
-        modifier.step(&mut scene.world);
-    }
-    let x0 = scene.x();
-    let steps = (3.0 / dt).round() as usize;
-    let mut max_phase1: f64 = 0.0;
-    for k in 0..steps {
-        let t_mid = (k as f64 + 0.5) * dt;
-        scene.set_force(Vector::new(profile.value(t_mid) as f32, 0.0, 0.0));
-        modifier.step(&mut scene.world);
-        let x = scene.x() - x0;
-        if (k as f64 + 1.0) * dt <= 1.0 {
-            max_phase1 = max_phase1.max(x.abs());
-        }
-    }
-    let x_end = scene.x() - x0;
-    let v_end = scene.vx();
+    // Phase I ends at 1 s: sample its end and, for the maximum, every step up to it.
+    let phase1: Vec<f64> = (1..=240).map(|k| k as f64 * dt).collect();
+    let mut times = phase1.clone();
+    times.push(3.0);
+    let (xs, v_end) = example1(law, &profile, dt, &times);
+    let max_phase1 = xs[..phase1.len()]
+        .iter()
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+    let x_end = xs[phase1.len()];
     let x_ref = reference.final_displacement();
     println!(
         "phase I max |x| {max_phase1:.2e} m (g_ba {:.1e}); final x {x_end:.5} m vs Phys {x_ref:.5} m ({:+.2} %), v_end {v_end:.1e}",

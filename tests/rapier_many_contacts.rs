@@ -56,7 +56,7 @@ fn hundreds_of_contacts_stay_consistent_through_churn() {
     // Even boxes: pushed along the row at 0.8 of break-away (must hold); odd boxes: across
     // the row at 1.5× (slide clear of their neighbours).
     let push = |i: usize| {
-        if i % 2 == 0 {
+        if i.is_multiple_of(2) {
             Vector::new((0.8 * MU_BA * weight) as f32, 0.0, 0.0)
         } else {
             Vector::new(0.0, 0.0, (1.5 * MU_BA * weight) as f32)

@@ -16,7 +16,7 @@ use stickslip::core::law::Law;
 use stickslip::core::popov;
 use stickslip::core::sliding_curve::Curve;
 use stickslip::core::waveform::Waveform;
-use stickslip::rapier::scenes::BoxOnGround;
+use stickslip::rapier::scenes::{BoxOnGround, PopovDrag, PopovDrive};
 use stickslip::rapier::{
     Amplitude, FrictionMaterial, StickSlip, StickSlipConfig, VibrationDirection, VibrationMode,
     VibrationSource,
@@ -25,22 +25,10 @@ use stickslip::rapier::{
 const MU0: f64 = 0.5;
 const C: f64 = 1e4;
 const ALPHA: f64 = 0.5;
-/// The sled's mass: large so one step's friction barely changes its velocity.
-const SLED_MASS: f32 = 1000.0;
 /// The statically pulled box's mass: light, so it moves as soon as it can.
 const BOX_MASS: f32 = 1.0;
-/// Averaging time of the mean normal force behind k_t = c F̄ (s): several periods.
-const STIFFNESS_TIME: f64 = 1.0;
 /// The mean normal force (N), applied as a force (gravity is off).
 const F_MEAN: f64 = 9.81;
-
-#[derive(Clone, Copy, Debug)]
-enum Drive {
-    /// A real vertical force F̄ α w(f t) on the box.
-    RealLoad,
-    /// A normal vibration source on the plate.
-    Source(VibrationMode),
-}
 
 struct Scene {
     world: PhysicsWorld,
@@ -62,7 +50,6 @@ fn scene(dt: f32, mass: f32, stick_speed: f64) -> Scene {
     let mut world = box_scene.world;
     let law = Law::elasto_plastic(C, MU0, MU0, Curve::constant(MU0).unwrap()).unwrap();
     let config = StickSlipConfig {
-        stiffness_time: STIFFNESS_TIME,
         stick_speed,
         ..StickSlipConfig::default()
     };
@@ -78,65 +65,6 @@ fn scene(dt: f32, mass: f32, stick_speed: f64) -> Scene {
     }
 }
 
-/// μ̄ measured for `waveform` at `beta` with `drive`.
-fn measured_mu_bar(waveform: &Waveform, beta: f64, drive: Drive) -> f64 {
-    let f = 5.0;
-    let steps_per_period = match drive {
-        Drive::Source(VibrationMode::Averaged) => 40,
-        _ => 400,
-    };
-    let dt = 1.0 / (f * steps_per_period as f64);
-    // The drag speeds reach 6e-5 m/s: count them as slipping, not holding.
-    let mut s = scene(dt as f32, SLED_MASS, 1e-6);
-    let f_mean = F_MEAN;
-    let v0 = beta * MU0 * ALPHA * f / C;
-    if let Drive::Source(mode) = drive {
-        let src = VibrationSource::new(
-            VibrationDirection::Normal,
-            Amplitude::Ratio(ALPHA),
-            f,
-            waveform.clone(),
-            0.0,
-            mode,
-        )
-        .unwrap();
-        s.modifier.set_vibration(s.plate, src);
-    }
-    // Warm-up: the spring needs ~(1−α)/(αβ) periods to load up to the friction cone, and
-    // under a real oscillating load the mean normal force behind k_t needs ~5 averaging times.
-    let settle = match drive {
-        Drive::RealLoad => (5.0 * STIFFNESS_TIME * f).ceil() as usize,
-        _ => 0,
-    };
-    let warm = ((1.0 - ALPHA) / (ALPHA * beta)).ceil() as usize + 3 + settle;
-    let periods = warm + 4;
-    let (mut sum_fx, mut sum_fz) = (0.0, 0.0);
-    for k in 0..(periods * steps_per_period) {
-        let t_mid = (k as f64 + 0.5) * dt;
-        let b = &mut s.world.bodies[s.body];
-        b.set_linvel(Vector::new(v0 as f32, b.linvel().y, 0.0), true);
-        b.reset_forces(true);
-        let extra = match drive {
-            Drive::RealLoad => f_mean * ALPHA * waveform.value(f * t_mid),
-            _ => 0.0,
-        };
-        b.add_force(Vector::new(0.0, -((f_mean + extra) as f32), 0.0), true);
-        s.modifier.step(&mut s.world);
-        if k >= warm * steps_per_period {
-            let r = &s.modifier.reports()[0];
-            sum_fx += -r.friction_force[0] as f64;
-            sum_fz += match drive {
-                // The law saw F̄ (1 + α w); its mean is F̄, the solver's normal force.
-                Drive::Source(VibrationMode::TimeResolved) => {
-                    r.normal_force * (1.0 + ALPHA * waveform.value(f * t_mid)).max(0.0)
-                }
-                _ => r.normal_force,
-            };
-        }
-    }
-    sum_fx / sum_fz
-}
-
 fn beta_grid(w: &Waveform) -> Vec<f64> {
     let bc = w.beta_c();
     if bc.is_finite() {
@@ -146,7 +74,7 @@ fn beta_grid(w: &Waveform) -> Vec<f64> {
     }
 }
 
-fn check_drive(drive: Drive) {
+fn check_drive(drive: PopovDrive) {
     let mut worst: f64 = 0.0;
     for w in [
         Waveform::Sine,
@@ -155,8 +83,10 @@ fn check_drive(drive: Drive) {
         Waveform::Square,
     ] {
         for beta in beta_grid(&w) {
-            let theory = MU0 * (1.0 - ALPHA * popov::psi(&w, beta).unwrap());
-            let got = measured_mu_bar(&w, beta, drive);
+            let setup = PopovDrag::new(w.clone(), drive);
+            assert_eq!((setup.mu0, setup.c, setup.alpha), (MU0, C, ALPHA));
+            let theory = setup.theory(beta);
+            let got = setup.measure(beta).unwrap();
             let err = (got - theory) / theory;
             worst = worst.max(err.abs());
             println!(
@@ -174,17 +104,17 @@ fn check_drive(drive: Drive) {
 
 #[test]
 fn sliding_friction_under_a_real_oscillating_load() {
-    check_drive(Drive::RealLoad);
+    check_drive(PopovDrive::RealLoad);
 }
 
 #[test]
 fn sliding_friction_under_a_time_resolved_vibration_source() {
-    check_drive(Drive::Source(VibrationMode::TimeResolved));
+    check_drive(PopovDrive::Source(VibrationMode::TimeResolved));
 }
 
 #[test]
 fn sliding_friction_under_an_averaged_vibration_source() {
-    check_drive(Drive::Source(VibrationMode::Averaged));
+    check_drive(PopovDrive::Source(VibrationMode::Averaged));
 }
 
 /// The pull force (over F̄) at which the box starts to slide under `direction` vibration.

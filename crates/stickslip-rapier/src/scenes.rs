@@ -124,3 +124,181 @@ impl PhysicsHooks for Conveyor {
         }
     }
 }
+
+/// How the normal force of a [`PopovDrag`] is modulated.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PopovDrive {
+    /// A real vertical force F̄ α w(f t) on the sled, carried by the solver's contact.
+    RealLoad,
+    /// A normal [`crate::VibrationSource`] on the plate, in the given mode.
+    Source(crate::VibrationMode),
+}
+
+/// Popov's experiment in rapier: a massive sled pressed onto a fixed plate by F̄ and dragged at
+/// constant velocity v0 (its horizontal velocity is imposed every step and one step's friction
+/// impulse cannot stop it, so the solver applies the contact's full friction), the normal force
+/// modulated as F̄ (1 + α w(f t)). Its contact is elasto-plastic in the seed's sharp limit
+/// (μ_ba = μ_max = μ0, flat sliding curve) with stiffness c, so Popov's contact spring is
+/// k_t = c F̄ and β = c v0 / (μ0 α f).
+#[derive(Debug, Clone)]
+pub struct PopovDrag {
+    /// Coefficient of friction μ0.
+    pub mu0: f64,
+    /// Law stiffness c (1/m).
+    pub c: f64,
+    /// Amplitude ratio α.
+    pub alpha: f64,
+    /// Vibration frequency f (Hz).
+    pub frequency: f64,
+    /// Mean normal force F̄ (N).
+    pub normal_force: f64,
+    /// Waveform.
+    pub waveform: stickslip_core::waveform::Waveform,
+    /// Modulation.
+    pub drive: PopovDrive,
+    /// Steps per vibration period (time-resolved needs hundreds; averaged mode needs few).
+    pub steps_per_period: usize,
+    /// Averaging time of the mean normal force behind k_t (s), several periods.
+    pub stiffness_time: f64,
+}
+
+impl PopovDrag {
+    /// The setup of stickslip's tests: μ0 = 0.5, c = 1e4 1/m, α = 0.5, f = 5 Hz, F̄ = 9.81 N,
+    /// 400 steps per period (40 in averaged mode).
+    pub fn new(waveform: stickslip_core::waveform::Waveform, drive: PopovDrive) -> Self {
+        PopovDrag {
+            mu0: 0.5,
+            c: 1e4,
+            alpha: 0.5,
+            frequency: 5.0,
+            normal_force: 9.81,
+            waveform,
+            drive,
+            steps_per_period: match drive {
+                PopovDrive::Source(crate::VibrationMode::Averaged) => 40,
+                _ => 400,
+            },
+            stiffness_time: 1.0,
+        }
+    }
+
+    /// Popov's μ̄ = μ0 (1 − α Ψ_w(β)) for this setup.
+    pub fn theory(&self, beta: f64) -> f64 {
+        let psi = stickslip_core::popov::psi(&self.waveform, beta).unwrap_or(f64::NAN);
+        self.mu0 * (1.0 - self.alpha * psi)
+    }
+
+    /// Measures μ̄ = ⟨F_x⟩/⟨F_z⟩ at `beta` after the spring has loaded up to the cone.
+    pub fn measure(&self, beta: f64) -> Result<f64, stickslip_core::ParamError> {
+        use stickslip_core::law::Law;
+        use stickslip_core::sliding_curve::Curve;
+        let f = self.frequency;
+        let dt = 1.0 / (f * self.steps_per_period as f64);
+        let mut scene = BoxOnGround {
+            half: 0.1,
+            mass: 1000.0,
+            gravity: 0.0,
+            dt: dt as f32,
+            rotations: false,
+            ..BoxOnGround::default()
+        }
+        .build();
+        let law = Law::elasto_plastic(self.c, self.mu0, self.mu0, Curve::constant(self.mu0)?)?;
+        // Drag speeds reach 1e-5 m/s: they count as slipping, not holding.
+        let config = crate::StickSlipConfig {
+            stiffness_time: self.stiffness_time,
+            stick_speed: 1e-7,
+            ..crate::StickSlipConfig::default()
+        };
+        let mut modifier =
+            crate::StickSlip::new(crate::FrictionMaterial::new(law)).with_config(config)?;
+        modifier.attach(&mut scene.world.colliders, scene.ground, None);
+        if let PopovDrive::Source(mode) = self.drive {
+            let src = crate::VibrationSource::new(
+                crate::VibrationDirection::Normal,
+                crate::Amplitude::Ratio(self.alpha),
+                f,
+                self.waveform.clone(),
+                0.0,
+                mode,
+            )?;
+            modifier.set_vibration(scene.ground, src);
+        }
+        let v0 = beta * self.mu0 * self.alpha * f / self.c;
+        // Warm-up: the spring needs ~(1−α)/(αβ) periods to reach the cone, and under a real
+        // oscillating load the mean normal force behind k_t ~5 averaging times.
+        let settle = match self.drive {
+            PopovDrive::RealLoad => (5.0 * self.stiffness_time * f).ceil() as usize,
+            PopovDrive::Source(_) => 0,
+        };
+        let warm = ((1.0 - self.alpha) / (self.alpha * beta)).ceil() as usize + 3 + settle;
+        let periods = warm + 4;
+        let (mut sum_fx, mut sum_fz) = (0.0, 0.0);
+        for k in 0..(periods * self.steps_per_period) {
+            let t_mid = (k as f64 + 0.5) * dt;
+            let w = self.waveform.value(f * t_mid);
+            let extra = match self.drive {
+                PopovDrive::RealLoad => self.normal_force * self.alpha * w,
+                PopovDrive::Source(_) => 0.0,
+            };
+            let b = &mut scene.world.bodies[scene.body];
+            b.set_linvel(Vector::new(v0 as f32, b.linvel().y, 0.0), true);
+            scene.set_force(Vector::new(0.0, -((self.normal_force + extra) as f32), 0.0));
+            modifier.step(&mut scene.world);
+            if k >= warm * self.steps_per_period
+                && let Some(r) = modifier.reports().first()
+            {
+                sum_fx += -r.friction_force[0] as f64;
+                sum_fz += match self.drive {
+                    // The law saw F̄ (1 + α w); the solver's normal force is F̄.
+                    PopovDrive::Source(crate::VibrationMode::TimeResolved) => {
+                        r.normal_force * (1.0 + self.alpha * w).max(0.0)
+                    }
+                    _ => r.normal_force,
+                };
+            }
+        }
+        Ok(sum_fx / sum_fz)
+    }
+}
+
+/// The seed's Example 1 in rapier: a 1 kg box (rotations locked) on the ground under the
+/// tangential force `profile`, with the friction `law`, at step `dt`. Returns the box's
+/// displacement at each of `times` (s) and its velocity at the end.
+pub fn example1(
+    law: stickslip_core::law::Law,
+    profile: &stickslip_core::block::ForceProfile,
+    dt: f64,
+    times: &[f64],
+) -> (Vec<f64>, f64) {
+    let mut scene = BoxOnGround {
+        half: 0.1,
+        mass: 1.0,
+        dt: dt as f32,
+        rotations: false,
+        ..BoxOnGround::default()
+    }
+    .build();
+    let mut modifier = crate::StickSlip::new(crate::FrictionMaterial::new(law));
+    modifier.attach(&mut scene.world.colliders, scene.ground, None);
+    // Settle on the ground first, then t = 0.
+    for _ in 0..(0.1 / dt).ceil() as usize {
+        modifier.step(&mut scene.world);
+    }
+    let x0 = scene.x();
+    let mut out = Vec::with_capacity(times.len());
+    let end = times.iter().cloned().fold(0.0, f64::max);
+    let steps = (end / dt).round() as usize;
+    for k in 0..steps {
+        let t_mid = (k as f64 + 0.5) * dt;
+        scene.set_force(Vector::new(profile.value(t_mid) as f32, 0.0, 0.0));
+        modifier.step(&mut scene.world);
+        let t = (k + 1) as f64 * dt;
+        for &ti in times {
+            if (t - ti).abs() < 0.5 * dt {
+                out.push(scene.x() - x0);
+            }
+        }
+    }
+    (out, scene.vx())
+}
