@@ -17,6 +17,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod block;
+pub mod chain;
 pub mod error;
 pub mod law;
 pub mod popov;
