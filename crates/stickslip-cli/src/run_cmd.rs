@@ -129,7 +129,15 @@ pub fn run(args: &RunArgs, json: bool) -> Result<(), CliError> {
     if let Some(addr) = &connect {
         sinks.push(Sink::Grpc((!addr.is_empty()).then(|| addr.clone())));
     }
-    let result = simulate(scene, steps, every, &sinks, json);
+    let result = simulate(scene, steps, every, &sinks, json).map_err(|e| match (e, &connect) {
+        (CliError::Rerun(stickslip_rerun::LogError::Flush(msg)), Some(addr)) => {
+            let url = stickslip_rerun::grpc_url((!addr.is_empty()).then_some(addr.as_str()));
+            CliError::Rerun(stickslip_rerun::LogError::Flush(format!(
+                "{msg} (is a rerun viewer listening at {url}? start one with `rerun`)"
+            )))
+        }
+        (e, _) => e,
+    });
     let (summary, logged, wall) = match result {
         Ok(r) => r,
         Err(e) => {
@@ -295,7 +303,7 @@ fn print_table(r: &RunReport<'_>) {
         ),
         (
             "dissipated energy",
-            format!("{:.6e} J", s.dissipated_energy),
+            format!("{} J", number(s.dissipated_energy)),
         ),
         ("finite state", s.finite.to_string()),
     ];

@@ -25,9 +25,9 @@ pub enum ScenarioError {
         origin: String,
         /// 1-based line of the field (or of the nearest enclosing table found), when located.
         line: Option<usize>,
-        /// What is wrong.
+        /// What is wrong (see also [`ScenarioError::build_error`]).
         #[source]
-        source: BuildError,
+        source: Box<BuildError>,
     },
 }
 
@@ -72,6 +72,15 @@ impl ScenarioError {
         match self {
             ScenarioError::Parse(p) => p.field.as_deref(),
             ScenarioError::Invalid { source, .. } => Some(source.field()),
+            ScenarioError::Io { .. } => None,
+        }
+    }
+
+    /// The validation error, for [`ScenarioError::Invalid`].
+    pub fn build_error(&self) -> Option<&BuildError> {
+        match self {
+            ScenarioError::Invalid { source, .. } => Some(source),
+            ScenarioError::Parse(_) => None,
             ScenarioError::Io { .. } => None,
         }
     }

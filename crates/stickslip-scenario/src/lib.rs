@@ -54,7 +54,7 @@ impl Scenario {
             .map_err(|source| ScenarioError::Invalid {
                 origin: origin.to_string(),
                 line: error::locate(text, source.field()).map(|(l, _)| l),
-                source,
+                source: Box::new(source),
             })?;
         Ok(scenario)
     }

@@ -116,11 +116,10 @@ fn invalid_law_parameters_name_the_material() {
 #[test]
 fn nan_and_negative_sizes_are_typed_validation_errors() {
     let e = err(&replace_line(21, "density = nan"));
-    match &e {
-        ScenarioError::Invalid {
-            source: BuildError::InvalidValue { field, .. },
-            ..
-        } => assert_eq!(field, "body[1].collider[0].density"),
+    match e.build_error() {
+        Some(BuildError::InvalidValue { field, .. }) => {
+            assert_eq!(field, "body[1].collider[0].density")
+        }
         other => panic!("{other:?}"),
     }
     // Validation errors are located too.
@@ -146,17 +145,13 @@ fn unknown_references_are_typed() {
     let e = err(&format!(
         "{BASE}[[driver]]\nkind = \"force\"\nbody = \"blok\"\ndirection = [1.0, 0.0, 0.0]\nknots = [[0.0, 0.0], [1.0, 1.0]]\n"
     ));
-    match &e {
-        ScenarioError::Invalid {
-            source:
-                BuildError::Unknown {
-                    field,
-                    what,
-                    name,
-                    known,
-                },
-            ..
-        } => {
+    match e.build_error() {
+        Some(BuildError::Unknown {
+            field,
+            what,
+            name,
+            known,
+        }) => {
             assert_eq!(field, "driver[0].body");
             assert_eq!(e.line(), Some(24));
             assert_eq!(*what, "body");
@@ -178,11 +173,8 @@ fn driver_errors_are_typed() {
         "{BASE}[[driver]]\nkind = \"force\"\nbody = \"ground\"\ndirection = [1.0, 0.0, 0.0]\nknots = [[0.0, 0.0], [1.0, 1.0]]\n"
     ));
     assert!(matches!(
-        e,
-        ScenarioError::Invalid {
-            source: BuildError::WrongBodyKind { .. },
-            ..
-        }
+        e.build_error(),
+        Some(BuildError::WrongBodyKind { .. })
     ));
     // Knots not starting at 0.
     let e = err(&format!(
@@ -223,11 +215,8 @@ fn too_stiff_spring_is_rejected_at_build() {
 fn duplicate_and_malformed_names() {
     let e = err(&replace_line(17, "name = \"ground\""));
     assert!(matches!(
-        e,
-        ScenarioError::Invalid {
-            source: BuildError::DuplicateBody { .. },
-            ..
-        }
+        e.build_error(),
+        Some(BuildError::DuplicateBody { .. })
     ));
     let e = err(&replace_line(17, "name = \"my block\""));
     assert_eq!(e.field(), Some("body[1].name"));
