@@ -8,12 +8,12 @@
 //!   k·x = friction), breaks away at k·x = μ_ba N, and the stick-slip cycle that follows has the
 //!   analytic period T = 2Δ/v_b + (π + 2 atan(v_b/(ωΔ)))/ω within 3 %;
 //! - `popov_plate_sweep`: holding force is μ0 (1 − α) (Popov Eq. 4), and the steady sliding
-//!   coefficient rises with drag speed as μ0 (1 − α Ψ(β)) of the core theory;
+//!   coefficient rises with drag speed as μ0 (1 − α Ψ(β)) of the core theory (within 5 %);
 //! - `vibrating_conveyor`: with the vibration on the parts flow downhill, without it they stay;
 //! - `row_250`: ≥ 250 stickslip contacts, states tracked one-to-one, nothing explodes.
 //!
-//! Every run also checks that all poses stay finite. A scenario file without a check here fails
-//! the test, so new scenarios come with an invariant.
+//! Every file also round-trips through `to_toml_string`, and every run keeps all poses finite.
+//! A scenario file without a check here fails the test, so new scenarios come with an invariant.
 
 use stickslip_core::law::{Law, Regime};
 use stickslip_scenario::{Runner, Scenario, Scene};
@@ -90,8 +90,12 @@ fn every_shipped_scenario_has_a_check() {
         if path.extension().is_some_and(|e| e == "toml") {
             let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
             assert!(checked.contains(&stem.as_str()), "no check for {stem}");
-            // Each builds and survives a few steps.
-            let scene = load(&stem).build().unwrap();
+            // Each round-trips through TOML, builds and survives a few steps.
+            let scenario = load(&stem);
+            let text = scenario.to_toml_string().unwrap();
+            let back = Scenario::from_toml_str(&text).unwrap();
+            assert_eq!(back.to_toml_string().unwrap(), text, "{stem} round trip");
+            let scene = scenario.build().unwrap();
             assert!(scene.steps >= 1);
             let mut r = Runner::new(scene);
             r.run(3);
