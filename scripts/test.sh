@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# The test suite (README's test command): `bash scripts/test.sh` from the repository root.
+# Installs what the tests need, then runs every test of the workspace, and the rapier tests
+# once more with rapier's multi-threaded `parallel` feature (the contact hook then runs on
+# several threads).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$HOME/.cache/stickslip-target}"
+export CARGO_TERM_COLOR="${CARGO_TERM_COLOR:-never}"
+
+# The rerun CLI from PyPI `rerun-sdk` (its version must match the `rerun` crate, 0.36.3),
+# in a venv under ~/.cache/stickslip. STICKSLIP_RERUN_CLI is the path of its `rerun` binary:
+# crates/stickslip-cli/tests/cli_run.rs uses it to verify written .rrd files with rerun's own
+# `rrd verify`/`rrd print` and to receive a live stream (`rerun --test-receive`).
+RERUN_SDK_VERSION=0.36.3
+install_rerun_cli() {
+    local venv="$HOME/.cache/stickslip/rerun-sdk-$RERUN_SDK_VERSION"
+    if [ ! -x "$venv/bin/rerun" ]; then
+        python3 -m venv "$venv"
+        "$venv/bin/python" -m pip install --quiet --disable-pip-version-check \
+            "rerun-sdk==$RERUN_SDK_VERSION"
+    fi
+    "$venv/bin/rerun" analytics disable >/dev/null 2>&1 || true
+    "$venv/bin/rerun" --version
+    export STICKSLIP_RERUN_CLI="$venv/bin/rerun"
+}
+install_rerun_cli
+
+cargo test --workspace
+cargo test -p stickslip --features parallel --test rapier_many_contacts --test rapier_popov
