@@ -276,7 +276,8 @@ impl ChainRun {
     }
 }
 
-/// Runs one IVP with the chosen method (as in [`crate::block::simulate`]).
+/// Runs one IVP with the chosen method (as in [`crate::block::simulate`], except the implicit
+/// method's rejection cap, see below).
 macro_rules! solve_with {
     ($integrator:expr, $tol:expr, $ivp:expr) => {
         match $integrator {
@@ -304,7 +305,10 @@ macro_rules! solve_with {
                         .rtol($tol.rtol)
                         .atol($tol.atol)
                         .max_steps($tol.max_steps)
-                        .max_rejects(10_000),
+                        // differential-equations 0.7's DIRK never resets its rejection
+                        // counter on an accepted step, so the cap bounds the rejections of
+                        // the whole run: make it the step budget.
+                        .max_rejects($tol.max_steps),
                 )
                 .solve(),
         }

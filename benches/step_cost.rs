@@ -1,0 +1,303 @@
+//! Step cost of stickslip against plain rapier friction, in the same run.
+//!
+//! Measures, for each scene of `benches/common` (boxes on a plane at ≈1k and ≈10k contact
+//! points, a 4-high pile at ≈10k, a 250-contact chain driven at 50 Hz, a vibratory trough with
+//! 480 parts; a plane at ≈100k points with `STICKSLIP_BENCH_FULL=1`):
+//! - criterion: the time of one `PhysicsWorld` step with plain rapier (`FrictionModel::Simplified`
+//!   and `::Coulomb`), a no-op contact hook, and stickslip with EP, Regul, Phys, and EP with a
+//!   time-resolved and an averaged vibration source;
+//! - an extra pass, outside criterion's timing, with a counting `#[global_allocator]`: contacts
+//!   really active (manifolds and points), heap allocations per step in steady state, live heap
+//!   bytes of each world (stickslip's state = EP world − no-op-hook world), and step times
+//!   measured interleaved (round-robin over the variants, median of rounds), which cancels
+//!   drifts of machine load between variants.
+//!
+//! Full run: `STICKSLIP_BENCH_OUT=cost.json cargo bench --bench step_cost` (the report script
+//! does this). Smoke run (each bench once, small settle, tiny extra pass):
+//! `cargo test --benches` or `cargo bench --bench step_cost -- --test`.
+
+mod common;
+
+use common::{Bench, Scene, Variant};
+use criterion::{BenchmarkId, Criterion, SamplingMode};
+use serde_json::{Value, json};
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicI64, AtomicU64, Ordering::Relaxed};
+use std::time::{Duration, Instant};
+use stickslip::rapier::StickSlip;
+
+/// Counts every allocation and tracks the live heap bytes.
+struct Counting;
+
+static ALLOCS: AtomicU64 = AtomicU64::new(0);
+static ALLOC_BYTES: AtomicU64 = AtomicU64::new(0);
+static LIVE: AtomicI64 = AtomicI64::new(0);
+
+// SAFETY: forwards to the system allocator unchanged; only counts.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCS.fetch_add(1, Relaxed);
+        ALLOC_BYTES.fetch_add(layout.size() as u64, Relaxed);
+        LIVE.fetch_add(layout.size() as i64, Relaxed);
+        // SAFETY: same contract as the caller's.
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        ALLOCS.fetch_add(1, Relaxed);
+        ALLOC_BYTES.fetch_add(layout.size() as u64, Relaxed);
+        LIVE.fetch_add(layout.size() as i64, Relaxed);
+        // SAFETY: same contract as the caller's.
+        unsafe { System.alloc_zeroed(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        LIVE.fetch_sub(layout.size() as i64, Relaxed);
+        // SAFETY: same contract as the caller's.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        ALLOCS.fetch_add(1, Relaxed);
+        ALLOC_BYTES.fetch_add(new_size as u64, Relaxed);
+        LIVE.fetch_add(new_size as i64 - layout.size() as i64, Relaxed);
+        // SAFETY: same contract as the caller's.
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+/// How much to do.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Mode {
+    /// `cargo test --benches` / `-- --test`: every bench once, tiny extra pass.
+    Smoke,
+    /// `cargo bench`: the 1k/10k scenes.
+    Normal,
+    /// `STICKSLIP_BENCH_FULL=1`: also the ≈100k-point plane.
+    Full,
+}
+
+fn mode() -> Mode {
+    let args: Vec<String> = std::env::args().collect();
+    let benching = args.iter().any(|a| a == "--bench") && !args.iter().any(|a| a == "--test");
+    if !benching || std::env::var_os("STICKSLIP_BENCH_SMOKE").is_some() {
+        Mode::Smoke
+    } else if std::env::var_os("STICKSLIP_BENCH_FULL").is_some() {
+        Mode::Full
+    } else {
+        Mode::Normal
+    }
+}
+
+/// A positional filter (criterion's), applied to scene names in the extra pass too.
+fn filter() -> Option<String> {
+    let mut args = std::env::args().skip(1);
+    let mut out = None;
+    while let Some(a) = args.next() {
+        if a.starts_with("--") {
+            // Options with a value.
+            if matches!(
+                a.as_str(),
+                "--save-baseline" | "--baseline" | "--load-baseline" | "--profile-time"
+            ) {
+                args.next();
+            }
+            continue;
+        }
+        out = Some(a);
+    }
+    out
+}
+
+fn scenes(mode: Mode) -> Vec<(Scene, &'static [Variant])> {
+    const SCALING: &[Variant] = &[Variant::PlainSimplified, Variant::NoopHook, Variant::Ep];
+    let mut v: Vec<(Scene, &'static [Variant])> = vec![
+        (Scene::plane_for_points(1_000), &Variant::ALL),
+        (Scene::plane_for_points(10_000), &Variant::ALL),
+        (
+            Scene::Pile {
+                stacks: 625,
+                height: 4,
+            },
+            &Variant::ALL,
+        ),
+        (Scene::Chain { links: 250 }, &Variant::ALL),
+        (Scene::Trough { parts: 480 }, &Variant::ALL),
+    ];
+    if mode == Mode::Full {
+        v.push((Scene::plane_for_points(100_000), SCALING));
+    }
+    v
+}
+
+fn settle_steps(scene: Scene, mode: Mode) -> usize {
+    if mode == Mode::Smoke {
+        3
+    } else {
+        scene.settle_steps()
+    }
+}
+
+fn selected(scene: Scene, filter: &Option<String>) -> bool {
+    filter.as_ref().is_none_or(|f| scene.name().contains(f))
+}
+
+fn run_criterion(mode: Mode, filter: &Option<String>) {
+    let mut c = Criterion::default()
+        .warm_up_time(Duration::from_millis(1500))
+        .measurement_time(Duration::from_secs(4))
+        .sample_size(20)
+        .without_plots()
+        .configure_from_args();
+    for (scene, variants) in scenes(mode) {
+        if !selected(scene, filter) {
+            continue;
+        }
+        let mut group = c.benchmark_group(scene.name());
+        if matches!(scene, Scene::Plane { boxes } if boxes > 10_000) {
+            group
+                .sampling_mode(SamplingMode::Flat)
+                .sample_size(10)
+                .measurement_time(Duration::from_secs(8));
+        }
+        for &variant in variants {
+            let mut bench = Bench::settled(scene, variant, settle_steps(scene, mode));
+            group.bench_function(BenchmarkId::from_parameter(variant.name()), |b| {
+                b.iter(|| bench.step())
+            });
+        }
+        group.finish();
+    }
+    c.final_summary();
+}
+
+/// Live heap bytes, allocations and bytes allocated since the last call.
+fn counters() -> (i64, u64, u64) {
+    (
+        LIVE.load(Relaxed),
+        ALLOCS.load(Relaxed),
+        ALLOC_BYTES.load(Relaxed),
+    )
+}
+
+fn median(v: &mut [f64]) -> f64 {
+    v.sort_by(|a, b| a.total_cmp(b));
+    let n = v.len();
+    if n == 0 {
+        f64::NAN
+    } else if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        0.5 * (v[n / 2 - 1] + v[n / 2])
+    }
+}
+
+/// The extra pass for one scene.
+fn extras(scene: Scene, variants: &[Variant], mode: Mode) -> Value {
+    let settle = settle_steps(scene, mode);
+    let alloc_steps = if mode == Mode::Smoke { 2 } else { 50 };
+    let mut rows = Vec::new();
+    let mut benches = Vec::new();
+    for &variant in variants {
+        // Live heap of the whole world (built and settled while nothing else allocates).
+        let (live0, _, _) = counters();
+        let mut b = Bench::settled(scene, variant, settle);
+        let (live1, a0, ab0) = counters();
+        for _ in 0..alloc_steps {
+            b.step();
+        }
+        let (live2, a1, ab1) = counters();
+        let (manifolds, points, all_manifolds) = b.contacts();
+        let sane = b.is_sane();
+        let active = b.modifier().map(|m| m.active_contacts());
+        let capacity = b.modifier().map(|m| m.state_capacity());
+        rows.push(json!({
+            "variant": variant.name(),
+            "manifolds": manifolds,
+            "points": points,
+            "all_manifolds": all_manifolds,
+            "allocs_per_step": (a1 - a0) as f64 / alloc_steps as f64,
+            "alloc_bytes_per_step": (ab1 - ab0) as f64 / alloc_steps as f64,
+            "live_heap_bytes": live1 - live0,
+            "live_heap_growth_per_step": (live2 - live1) as f64 / alloc_steps as f64,
+            "stickslip_active_contacts": active,
+            "stickslip_state_slots": capacity,
+            "sane": sane,
+        }));
+        benches.push(b);
+    }
+    // Interleaved timing: rounds over all variants, rotating the order each round.
+    let rounds = if mode == Mode::Smoke { 1 } else { 15 };
+    let target = Duration::from_millis(if mode == Mode::Smoke { 1 } else { 40 });
+    let block: Vec<usize> = benches
+        .iter_mut()
+        .map(|b| {
+            let t = Instant::now();
+            b.step();
+            let one = t.elapsed().max(Duration::from_micros(1));
+            (target.as_secs_f64() / one.as_secs_f64()).ceil().max(1.0) as usize
+        })
+        .collect();
+    let mut times: Vec<Vec<f64>> = vec![Vec::new(); benches.len()];
+    for r in 0..rounds {
+        for k in 0..benches.len() {
+            let i = (k + r) % benches.len();
+            let t = Instant::now();
+            for _ in 0..block[i] {
+                benches[i].step();
+            }
+            times[i].push(t.elapsed().as_secs_f64() * 1e9 / block[i] as f64);
+        }
+    }
+    for (row, t) in rows.iter_mut().zip(times.iter_mut()) {
+        row["paired_ns_per_step"] = json!(median(t));
+    }
+    json!({
+        "name": scene.name(),
+        "describe": scene.describe(),
+        "dt": scene.dt(),
+        "variants": rows,
+    })
+}
+
+fn main() {
+    let mode = mode();
+    let filter = filter();
+    run_criterion(mode, &filter);
+
+    let mut out = Vec::new();
+    for (scene, variants) in scenes(mode) {
+        if !selected(scene, &filter) {
+            continue;
+        }
+        let started = Instant::now();
+        let v = extras(scene, variants, mode);
+        println!(
+            "extra pass {}: {:.1} s",
+            scene.name(),
+            started.elapsed().as_secs_f64()
+        );
+        for r in v["variants"].as_array().into_iter().flatten() {
+            println!(
+                "  {:<18} {:>6} manifolds {:>7} points {:>9.1} allocs/step {:>12} live B {:>12.0} ns/step (paired)",
+                r["variant"].as_str().unwrap_or(""),
+                r["manifolds"],
+                r["points"],
+                r["allocs_per_step"].as_f64().unwrap_or(f64::NAN),
+                r["live_heap_bytes"],
+                r["paired_ns_per_step"].as_f64().unwrap_or(f64::NAN),
+            );
+        }
+        out.push(v);
+    }
+    let doc = json!({
+        "mode": format!("{mode:?}").to_lowercase(),
+        "state_bytes_per_contact": StickSlip::<()>::STATE_BYTES_PER_CONTACT,
+        "scenes": out,
+    });
+    if let Some(path) = std::env::var_os("STICKSLIP_BENCH_OUT") {
+        std::fs::write(&path, serde_json::to_string_pretty(&doc).expect("json"))
+            .expect("write STICKSLIP_BENCH_OUT");
+        println!("wrote {}", path.to_string_lossy());
+    }
+}

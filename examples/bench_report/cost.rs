@@ -1,0 +1,464 @@
+//! The cost section: criterion's step times and the bench's extra pass, as ratios against plain
+//! rapier, with the targets.
+
+use crate::Options;
+use crate::table::{self, Summary, int, num, ratio, render};
+use serde_json::Value;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// Target: stickslip step time over plain rapier at 1k and 10k contacts.
+const TIME_TARGET: f64 = 1.10;
+/// Target: spread of the cost per contact from 1k to 100k contacts.
+const FLAT_TARGET: f64 = 0.20;
+/// Target: bytes of friction state per active contact.
+const BYTES_TARGET: f64 = 64.0;
+
+/// One plane size: (contact points, plain, no-op hook, EP ns per contact point).
+type Scaling = (usize, f64, f64, f64);
+
+/// Criterion's median (ns) and its 95 % interval for `group/function`.
+fn criterion_median(dir: &Path, group: &str, function: &str) -> Option<(f64, f64, f64)> {
+    let path = dir
+        .join(group)
+        .join(function)
+        .join("new")
+        .join("estimates.json");
+    let v: Value = serde_json::from_str(&std::fs::read_to_string(path).ok()?).ok()?;
+    let m = &v["median"];
+    Some((
+        m["point_estimate"].as_f64()?,
+        m["confidence_interval"]["lower_bound"].as_f64()?,
+        m["confidence_interval"]["upper_bound"].as_f64()?,
+    ))
+}
+
+struct Row<'a> {
+    v: &'a Value,
+    name: &'a str,
+    criterion: Option<(f64, f64, f64)>,
+    paired: f64,
+}
+
+impl Row<'_> {
+    fn f(&self, key: &str) -> f64 {
+        self.v[key].as_f64().unwrap_or(f64::NAN)
+    }
+}
+
+fn us(ns: f64) -> String {
+    num(ns / 1e3, 3)
+}
+
+/// Scenes whose stickslip variants carry the 1.10× target (≈1k and ≈10k contacts).
+fn timed_target(scene: &str) -> bool {
+    matches!(scene, "plane_1000" | "plane_10000" | "pile_10000")
+}
+
+pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result<(), String> {
+    let path = opts
+        .cost_json
+        .as_ref()
+        .ok_or("no --cost-json (run scripts/bench_report.sh)")?;
+    let doc: Value = serde_json::from_str(
+        &std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?,
+    )
+    .map_err(|e| format!("{}: {e}", path.display()))?;
+    let crit_dir = opts.criterion.as_deref();
+    let state_bytes = doc["state_bytes_per_contact"].as_f64().unwrap_or(f64::NAN);
+    let scenes = doc["scenes"]
+        .as_array()
+        .ok_or("no scenes in the cost json")?;
+
+    let _ = writeln!(
+        md,
+        "## Cost: step time against plain rapier\n\n\
+         One `PhysicsWorld` step of the same scene, stepped by plain rapier friction \
+         (`FrictionModel::Simplified`, rapier's 3D default and the model stickslip runs on, and \
+         `FrictionModel::Coulomb`), by a hook that does nothing (rapier never recycles hooked \
+         pairs, so this is the floor of any contact modifier), and by stickslip with each law and \
+         with a normal vibration source (ratio 0.3) in either mode on the ground/trough. Every \
+         dynamic body has sleeping disabled, so every contact is active every step.\n\n\
+         Two timings of the same binary (`benches/step_cost.rs`):\n\
+         - **criterion**: median of 20 samples per variant (1.5 s warm-up, 4 s measurement), \
+         the variants one after the other;\n\
+         - **paired**: all variants of a scene kept alive and stepped in 15 interleaved rounds \
+         of ≈40 ms each (rotating order); median over rounds. Load from other processes \
+         hits all variants alike, so the **paired ratios are the ones the targets are judged \
+         on**; criterion's are shown beside them.\n\n\
+         Contacts are counted after the measurement: manifolds (contact patches, the unit \
+         stickslip keeps state for) and solver contact points (what rapier solves). \
+         Allocations are counted by a counting `#[global_allocator]` in the bench binary over \
+         50 steady-state steps.\n"
+    );
+
+    let mut worst_time: Vec<(String, f64)> = Vec::new();
+    let mut ep_vs_noop: Vec<(String, f64, bool)> = Vec::new();
+    let mut alloc_rows = Vec::new();
+    let mut mem_rows = Vec::new();
+    let mut worst_alloc: f64 = f64::NEG_INFINITY;
+    let mut moving_alloc: Vec<String> = Vec::new();
+    let mut plain_allocs: f64 = 0.0;
+    let mut worst_bytes: f64 = 0.0;
+    let mut worst_state: f64 = 0.0;
+    let mut scaling: Vec<Scaling> = Vec::new();
+
+    for scene in scenes {
+        let name = scene["name"].as_str().unwrap_or("?");
+        let rows: Vec<Row> = scene["variants"]
+            .as_array()
+            .into_iter()
+            .flatten()
+            .map(|v| {
+                let vname = v["variant"].as_str().unwrap_or("?");
+                Row {
+                    v,
+                    name: vname,
+                    criterion: crit_dir.and_then(|d| criterion_median(d, name, vname)),
+                    paired: v["paired_ns_per_step"].as_f64().unwrap_or(f64::NAN),
+                }
+            })
+            .collect();
+        let find = |n: &str| rows.iter().find(|r| r.name == n);
+        let base = find("plain_simplified");
+        let coul = find("plain_coulomb");
+        let noop = find("noop_hook");
+        let crit = |r: Option<&Row>| r.and_then(|r| r.criterion).map_or(f64::NAN, |c| c.0);
+        let _ = writeln!(
+            md,
+            "### `{name}`: {}\n",
+            scene["describe"].as_str().unwrap_or("")
+        );
+        let mut trs = Vec::new();
+        for r in &rows {
+            let is_ss = !matches!(r.name, "plain_simplified" | "plain_coulomb" | "noop_hook");
+            let c = r.criterion.map_or(f64::NAN, |c| c.0);
+            let paired_vs_base = r.paired / base.map_or(f64::NAN, |b| b.paired);
+            let paired_vs_noop = r.paired / noop.map_or(f64::NAN, |b| b.paired);
+            if r.name == "ep" {
+                ep_vs_noop.push((name.to_string(), paired_vs_noop, timed_target(name)));
+            }
+            let target = if is_ss && timed_target(name) {
+                let met = paired_vs_base <= TIME_TARGET;
+                worst_time.push((format!("{name} {}", r.name), paired_vs_base));
+                format!("≤ {TIME_TARGET:.2}×: {}", table::verdict(met))
+            } else {
+                "—".into()
+            };
+            trs.push(vec![
+                format!("`{}`", r.name),
+                format!("{} / {}", int(r.f("manifolds")), int(r.f("points"))),
+                r.criterion.map_or("—".into(), |(m, lo, hi)| {
+                    format!("{} ({}–{})", us(m), us(lo), us(hi))
+                }),
+                ratio(c / crit(base)),
+                ratio(c / crit(coul)),
+                ratio(c / crit(noop)),
+                us(r.paired),
+                ratio(paired_vs_base),
+                ratio(paired_vs_noop),
+                target,
+            ]);
+            if !r.v["sane"].as_bool().unwrap_or(true) {
+                let _ = writeln!(md, "- ⚠ `{}`: a body left the scene (blow-up)", r.name);
+            }
+        }
+        md.push_str(&render(
+            &[
+                "variant",
+                "manifolds / points",
+                "criterion µs/step (95 % CI)",
+                "× plain Simplified",
+                "× plain Coulomb",
+                "× no-op hook",
+                "paired µs/step",
+                "paired × plain Simplified",
+                "paired × no-op hook",
+                "target",
+            ],
+            &trs,
+        ));
+
+        // Allocations per step.
+        let a = |n: &str| find(n).map_or(f64::NAN, |r| r.f("allocs_per_step"));
+        let ep_extra = a("ep") - a("noop_hook");
+        if name.starts_with("plane_") || name.starts_with("pile_") {
+            plain_allocs = plain_allocs.max(a("plain_simplified"));
+        }
+        let ss_extra = rows
+            .iter()
+            .filter(|r| !matches!(r.name, "plain_simplified" | "plain_coulomb" | "noop_hook"))
+            .map(|r| r.f("allocs_per_step") - a("noop_hook"))
+            .fold(f64::NEG_INFINITY, f64::max);
+        // Static scenes (nothing moves): rapier allocates the same in every variant, so the
+        // difference is stickslip's. In moving scenes the worlds drift apart and rapier's own
+        // per-step allocations differ between variants.
+        if name.starts_with("plane_") || name.starts_with("pile_") {
+            worst_alloc = worst_alloc.max(ss_extra);
+        } else {
+            moving_alloc.push(format!("`{name}` {}", num(ss_extra, 3)));
+        }
+        alloc_rows.push(vec![
+            format!("`{name}`"),
+            num(a("plain_simplified"), 3),
+            num(a("plain_coulomb"), 3),
+            num(a("noop_hook"), 3),
+            num(a("ep"), 3),
+            num(a("regul"), 3),
+            num(a("phys"), 3),
+            num(a("ep_vib_resolved"), 3),
+            num(a("ep_vib_averaged"), 3),
+            num(ep_extra, 3),
+        ]);
+
+        // Memory: live heap of the EP world minus the no-op-hook world.
+        if let (Some(ep), Some(nh)) = (find("ep"), noop) {
+            let extra = ep.f("live_heap_bytes") - nh.f("live_heap_bytes");
+            let manifolds = ep.f("manifolds");
+            let points = ep.f("points");
+            let records = ep.f("stickslip_active_contacts");
+            let per_manifold = extra / manifolds;
+            worst_bytes = worst_bytes.max(per_manifold);
+            worst_state = worst_state.max(state_bytes * records / manifolds);
+            mem_rows.push(vec![
+                format!("`{name}`"),
+                int(manifolds),
+                int(points),
+                int(ep.f("all_manifolds")),
+                int(records),
+                num(state_bytes * records / manifolds, 3),
+                num(extra / 1024.0, 4),
+                num(extra / records, 3),
+                num(per_manifold, 3),
+                num(extra / points, 3),
+                num(ep.f("live_heap_growth_per_step"), 3),
+            ]);
+        }
+
+        // Scaling: planes.
+        if let Some(n) = name
+            .strip_prefix("plane_")
+            .and_then(|s| s.parse::<usize>().ok())
+            && let (Some(b), Some(nh), Some(ep)) = (base, noop, find("ep"))
+        {
+            let pts = ep.f("points");
+            let _ = n;
+            scaling.push((
+                pts as usize,
+                b.paired / pts,
+                nh.paired / pts,
+                ep.paired / pts,
+            ));
+        }
+    }
+
+    // Targets: step time.
+    for (what, r) in &worst_time {
+        if what.ends_with(" ep") {
+            summary.add(
+                format!("step time, EP, `{}`", what.trim_end_matches(" ep")),
+                "≤ 1.10× plain",
+                ratio(*r),
+                *r <= TIME_TARGET,
+            );
+        }
+    }
+    if let Some((what, r)) = worst_time
+        .iter()
+        .filter(|(w, _)| !w.ends_with(" ep"))
+        .max_by(|a, b| a.1.total_cmp(&b.1))
+    {
+        summary.add(
+            "step time, worst other stickslip variant at 1k/10k",
+            "≤ 1.10× plain",
+            format!("{} (`{what}`)", ratio(*r)),
+            *r <= TIME_TARGET,
+        );
+    }
+
+    let list = |pick: &dyn Fn(bool) -> bool| {
+        ep_vs_noop
+            .iter()
+            .filter(|(_, _, t)| pick(*t))
+            .map(|(n, r, _)| format!("`{n}` {}", ratio(*r)))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    summary.info(
+        "step time of EP over the no-op hook (the part stickslip controls), 1k/10k scenes",
+        "—",
+        list(&|t| t),
+    );
+    summary.info("same, chain and trough", "—", list(&|t| !t));
+
+    // Scaling table.
+    let _ = writeln!(
+        md,
+        "### Cost per contact from 1k to 100k contacts (boxes on a plane, paired timings)\n"
+    );
+    scaling.sort_by_key(|s| s.0);
+    if scaling.len() >= 2 {
+        let rows: Vec<Vec<String>> = scaling
+            .iter()
+            .map(|(p, b, nh, ep)| {
+                vec![
+                    int(*p as f64),
+                    num(*b, 3),
+                    num(*nh, 3),
+                    num(*ep, 3),
+                    num(ep - b, 3),
+                ]
+            })
+            .collect();
+        md.push_str(&render(
+            &[
+                "contact points",
+                "plain ns/contact",
+                "no-op hook ns/contact",
+                "EP ns/contact",
+                "EP − plain ns/contact",
+            ],
+            &rows,
+        ));
+        let spread = |f: &dyn Fn(&Scaling) -> f64| {
+            let v: Vec<f64> = scaling.iter().map(f).collect();
+            let lo = v.iter().cloned().fold(f64::INFINITY, f64::min);
+            let hi = v.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+            hi / lo - 1.0
+        };
+        let ep_spread = spread(&|s| s.3);
+        let plain_spread = spread(&|s| s.1);
+        let extra_spread = spread(&|s| s.3 - s.1);
+        let range = format!(
+            "{}–{} points",
+            scaling.first().map_or(0, |s| s.0),
+            scaling.last().map_or(0, |s| s.0)
+        );
+        let _ = writeln!(
+            md,
+            "Spread of the cost per contact (max/min − 1) over {range}: EP {}, plain rapier {}, \
+             stickslip's part (EP − plain) {}.\n",
+            table::upct(ep_spread),
+            table::upct(plain_spread),
+            table::upct(extra_spread)
+        );
+        let full = scaling.last().is_some_and(|s| s.0 >= 50_000);
+        summary.add(
+            format!("cost per contact flat, EP, {range}"),
+            "within 20 %",
+            format!(
+                "spread {} (plain rapier {}, stickslip's part {}){}",
+                table::upct(ep_spread),
+                table::upct(plain_spread),
+                table::upct(extra_spread),
+                if full { "" } else { "; 100k not run" }
+            ),
+            ep_spread <= FLAT_TARGET && full,
+        );
+    } else {
+        md.push_str("Not measured (needs the plane scenes).\n\n");
+    }
+
+    // Memory.
+    let _ = writeln!(
+        md,
+        "### Memory per active contact\n\n\
+         stickslip keeps one record per contact manifold (a patch of up to 4 points under \
+         rapier's `Simplified` friction, which solves one friction constraint per manifold): \
+         `StickSlip::STATE_BYTES_PER_CONTACT` = **{state_bytes} bytes** (law state, stick \
+         anchors, bookkeeping), i.e. {} bytes per solver contact point on a box face. \
+         Measured besides: the live heap of the EP world minus the no-op-hook world of the \
+         same scene (both built and settled the same way), which adds the slot array's spare \
+         capacity, the per-slot lock, the key map used for rapier's merged cluster manifolds \
+         and the per-step read-back reports (`StickSlip::reports`).\n",
+        num(state_bytes / 4.0, 3)
+    );
+    md.push_str(&render(
+        &[
+            "scene",
+            "active manifolds",
+            "solver points",
+            "all manifolds rapier keeps",
+            "stickslip records",
+            "record B per active manifold",
+            "stickslip heap KiB",
+            "heap B per record",
+            "heap B per active manifold",
+            "heap B per point",
+            "heap growth B/step",
+        ],
+        &mem_rows,
+    ));
+    let _ = writeln!(
+        md,
+        "\"Active manifolds\" have at least one solver contact point. rapier also keeps \
+         manifolds whose points all lie beyond the contact prediction distance (pairs whose \
+         enlarged bounding boxes overlap: neighbouring stacks, parts side by side); stickslip \
+         keeps a record for every manifold of a hooked pair, empty ones included, so where \
+         dynamic bodies are hooked (`pile`, `trough`) its records outnumber the active \
+         contacts.\n"
+    );
+    summary.add(
+        "friction state record size",
+        "≤ 64 B per contact",
+        format!(
+            "{state_bytes} B per manifold record ({} B per point of a 4-point patch)",
+            num(state_bytes / 4.0, 3)
+        ),
+        state_bytes <= BYTES_TARGET,
+    );
+    summary.add(
+        "friction state per active contact (records kept × record size / active manifolds)",
+        "≤ 64 B",
+        format!("{} B, worst scene", num(worst_state, 3)),
+        worst_state <= BYTES_TARGET,
+    );
+    summary.add(
+        "all stickslip heap per active contact (records, slots, index, reports)",
+        "≤ 64 B",
+        format!("{} B per active manifold, worst scene", num(worst_bytes, 3)),
+        worst_bytes <= BYTES_TARGET,
+    );
+
+    // Allocations.
+    let _ = writeln!(
+        md,
+        "### Heap allocations per step in steady state\n\n\
+         The last column is what stickslip adds: EP minus the no-op hook in the same scene \
+         (rapier's own allocations per step are in the first columns).\n"
+    );
+    md.push_str(&render(
+        &[
+            "scene",
+            "plain Simplified",
+            "plain Coulomb",
+            "no-op hook",
+            "EP",
+            "Regul",
+            "Phys",
+            "EP + resolved vib.",
+            "EP + averaged vib.",
+            "EP − no-op",
+        ],
+        &alloc_rows,
+    ));
+    let _ = writeln!(
+        md,
+        "In the static scenes (`plane`, `pile`: nothing moves) rapier allocates the same in \
+         every variant, so any difference would be stickslip's. The moving scenes (`chain`, \
+         `trough`) drift apart between variants (different contact sets step by step), so \
+         rapier's own count differs there; worst stickslip variant over the no-op hook: {}.\n",
+        moving_alloc.join(", ")
+    );
+    summary.add(
+        "heap allocations per step added by stickslip (steady state, static scenes)",
+        "0",
+        format!(
+            "{} (worst stickslip variant over the no-op hook; rapier itself: {} per step)",
+            num(worst_alloc, 3),
+            num(plain_allocs, 3)
+        ),
+        worst_alloc <= 0.0,
+    );
+    Ok(())
+}
