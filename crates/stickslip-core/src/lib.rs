@@ -19,6 +19,7 @@
 pub mod block;
 pub mod chain;
 pub mod error;
+mod integrate;
 pub mod law;
 pub mod popov;
 pub mod sliding_curve;

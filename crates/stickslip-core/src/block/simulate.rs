@@ -1,6 +1,7 @@
 //! Integrating the block with adaptive methods.
 
 use super::{Block, ForceProfile};
+use crate::integrate::solve_with;
 use crate::law::{ElastoPlastic, Law, Regularized};
 use crate::sliding_curve::{Curve, SlidingCurve};
 use differential_equations::prelude::*;
@@ -209,42 +210,6 @@ impl ODE<f64, [f64; 3]> for SmoothOde<'_> {
             Smooth::Regul(_) => 0.0,
         };
     }
-}
-
-/// Runs one IVP with the chosen method; a macro because the two method types differ.
-macro_rules! solve_with {
-    ($integrator:expr, $tol:expr, $ivp:expr) => {
-        match $integrator {
-            Integrator::Explicit => $ivp
-                .method(
-                    ExplicitRungeKutta::rkf45()
-                        .rtol($tol.rtol)
-                        .atol($tol.atol)
-                        .max_steps($tol.max_steps)
-                        .max_rejects(10_000),
-                )
-                .solve(),
-            Integrator::DormandPrince => $ivp
-                .method(
-                    ExplicitRungeKutta::dopri5()
-                        .rtol($tol.rtol)
-                        .atol($tol.atol)
-                        .max_steps($tol.max_steps)
-                        .max_rejects(10_000),
-                )
-                .solve(),
-            Integrator::Implicit => $ivp
-                .method(
-                    DiagonallyImplicitRungeKutta::esdirk324l2sa()
-                        .rtol($tol.rtol)
-                        .atol($tol.atol)
-                        .max_steps($tol.max_steps)
-                        .max_rejects(10_000),
-                )
-                .solve(),
-        }
-        .map_err(|e| SimError::Solver(format!("{e:?}")))
-    };
 }
 
 fn empty_run() -> BlockRun {

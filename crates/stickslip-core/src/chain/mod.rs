@@ -39,6 +39,7 @@
 
 use crate::block::{Integrator, RunStats, SimError, Tolerances};
 use crate::error::{ParamError, non_negative, positive};
+use crate::integrate::solve_with;
 use crate::law::{ElastoPlastic, Regularized};
 use differential_equations::prelude::*;
 use serde::Serialize;
@@ -274,46 +275,6 @@ impl ChainRun {
         let k = self.x.len().max(1) as f64;
         acc.into_iter().map(|a| (a / k).sqrt()).collect()
     }
-}
-
-/// Runs one IVP with the chosen method (as in [`crate::block::simulate`], except the implicit
-/// method's rejection cap, see below).
-macro_rules! solve_with {
-    ($integrator:expr, $tol:expr, $ivp:expr) => {
-        match $integrator {
-            Integrator::Explicit => $ivp
-                .method(
-                    ExplicitRungeKutta::rkf45()
-                        .rtol($tol.rtol)
-                        .atol($tol.atol)
-                        .max_steps($tol.max_steps)
-                        .max_rejects(10_000),
-                )
-                .solve(),
-            Integrator::DormandPrince => $ivp
-                .method(
-                    ExplicitRungeKutta::dopri5()
-                        .rtol($tol.rtol)
-                        .atol($tol.atol)
-                        .max_steps($tol.max_steps)
-                        .max_rejects(10_000),
-                )
-                .solve(),
-            Integrator::Implicit => $ivp
-                .method(
-                    DiagonallyImplicitRungeKutta::esdirk324l2sa()
-                        .rtol($tol.rtol)
-                        .atol($tol.atol)
-                        .max_steps($tol.max_steps)
-                        // differential-equations 0.7's DIRK never resets its rejection
-                        // counter on an accepted step, so the cap bounds the rejections of
-                        // the whole run: make it the step budget.
-                        .max_rejects($tol.max_steps),
-                )
-                .solve(),
-        }
-        .map_err(|e| SimError::Solver(format!("{e:?}")))
-    };
 }
 
 /// Integrates `chain` from rest over `[0, t_end]`, sampling every `output_dt`.
