@@ -9,8 +9,9 @@
 //! - an extra pass, outside criterion's timing, with a counting `#[global_allocator]`: contacts
 //!   really active (manifolds and points), heap allocations per step in steady state, live heap
 //!   bytes of each world (stickslip's state = EP world − no-op-hook world), and step times
-//!   measured interleaved (round-robin over the variants, median of rounds), which cancels
-//!   drifts of machine load between variants.
+//!   measured interleaved (round-robin over the variants, one untimed warm-up step then
+//!   ≈40 ms of timed steps per turn, median of rounds), which cancels drifts of machine load
+//!   between variants.
 //!
 //! Full run: `STICKSLIP_BENCH_OUT=cost.json cargo bench --bench step_cost` (the report script
 //! does this). Smoke run (each bench once, small settle, tiny extra pass):
@@ -235,13 +236,15 @@ fn extras(scene: Scene, variants: &[Variant], mode: Mode) -> Value {
             let t = Instant::now();
             b.step();
             let one = t.elapsed().max(Duration::from_micros(1));
-            (target.as_secs_f64() / one.as_secs_f64()).ceil().max(1.0) as usize
+            (target.as_secs_f64() / one.as_secs_f64()).ceil().max(2.0) as usize
         })
         .collect();
     let mut times: Vec<Vec<f64>> = vec![Vec::new(); benches.len()];
     for r in 0..rounds {
         for k in 0..benches.len() {
             let i = (k + r) % benches.len();
+            // One untimed step: the other worlds just ran and evicted this one's caches.
+            benches[i].step();
             let t = Instant::now();
             for _ in 0..block[i] {
                 benches[i].step();

@@ -83,7 +83,9 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
          - **criterion**: median of 20 samples per variant (1.5 s warm-up, 4 s measurement), \
          the variants one after the other;\n\
          - **paired**: all variants of a scene kept alive and stepped in 15 interleaved rounds \
-         of ≈40 ms each (rotating order); median over rounds. Load from other processes \
+         (rotating order); in each round a variant takes one untimed step (to warm its caches \
+         after the others ran) and then ≈40 ms of timed steps (at least 2); median over \
+         rounds. Load from other processes \
          hits all variants alike, so the **paired ratios are the ones the targets are judged \
          on**; criterion's are shown beside them.\n\n\
          Contacts are counted after the measurement: manifolds (contact patches, the unit \
@@ -289,7 +291,7 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
         "—",
         list(&|t| t),
     );
-    summary.info("same, chain and trough", "—", list(&|t| !t));
+    summary.info("same, other scenes", "—", list(&|t| !t));
 
     // Scaling table.
     let _ = writeln!(

@@ -65,10 +65,12 @@ pub fn upct(x: f64) -> String {
 
 /// A ratio like `1.07×`.
 pub fn ratio(x: f64) -> String {
-    if x.is_finite() {
+    if !x.is_finite() {
+        "—".into()
+    } else if x.abs() >= 0.1 {
         format!("{x:.2}×")
     } else {
-        "—".into()
+        format!("{}×", num(x, 2))
     }
 }
 
