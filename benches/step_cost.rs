@@ -3,15 +3,15 @@
 //! Measures, for each scene of `benches/common` (boxes on a plane at ≈1k and ≈10k contact
 //! points, a 4-high pile at ≈10k, a 250-contact chain driven at 50 Hz, a vibratory trough with
 //! 480 parts; a plane at ≈100k points with `STICKSLIP_BENCH_FULL=1`):
-//! - criterion: the time of one `PhysicsWorld` step with plain rapier (`FrictionModel::Simplified`
+//! - criterion (thread CPU time, see [`ThreadCpu`]): one `PhysicsWorld` step with plain rapier (`FrictionModel::Simplified`
 //!   and `::Coulomb`), a no-op contact hook, and stickslip with EP, Regul, Phys, and EP with a
 //!   time-resolved and an averaged vibration source;
 //! - an extra pass, outside criterion's timing, with a counting `#[global_allocator]`: contacts
 //!   really active (manifolds and points), heap allocations per step in steady state, live heap
 //!   bytes of each world (stickslip's state = EP world − no-op-hook world), and step times
 //!   measured interleaved (round-robin over the variants, one untimed warm-up step then
-//!   ≈40 ms of timed steps per turn, median of rounds), which cancels drifts of machine load
-//!   between variants.
+//!   ≈40 ms of timed steps per turn, median of rounds; thread CPU time and wall time), which
+//!   cancels drifts of machine load between variants.
 //!
 //! Full run: `STICKSLIP_BENCH_OUT=cost.json cargo bench --bench step_cost` (the report script
 //! does this). Smoke run (each bench once, small settle, tiny extra pass):
@@ -20,6 +20,7 @@
 mod common;
 
 use common::{Bench, Scene, Variant};
+use criterion::measurement::{Measurement, ValueFormatter, WallTime};
 use criterion::{BenchmarkId, Criterion, SamplingMode};
 use serde_json::{Value, json};
 use std::alloc::{GlobalAlloc, Layout, System};
@@ -66,6 +67,51 @@ unsafe impl GlobalAlloc for Counting {
 
 #[global_allocator]
 static GLOBAL: Counting = Counting;
+
+/// CPU time consumed by the calling thread.
+fn thread_cpu() -> Duration {
+    let mut ts = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: `ts` is a valid, writable timespec; the clock id is a constant of the platform.
+    let rc = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
+    if rc != 0 {
+        return Duration::ZERO;
+    }
+    Duration::new(ts.tv_sec as u64, ts.tv_nsec as u32)
+}
+
+/// Criterion measurement: CPU time of the benchmarking thread. Steps are single-threaded
+/// (rapier without its `parallel` feature), so on an idle machine this equals wall time, and
+/// on a busy one (2 cores shared with builds) it leaves out the time the thread waits to be
+/// scheduled, which is what makes wall-clock ratios between variants drift.
+struct ThreadCpu;
+
+static WALL: WallTime = WallTime;
+
+impl Measurement for ThreadCpu {
+    type Intermediate = Duration;
+    type Value = Duration;
+    fn start(&self) -> Duration {
+        thread_cpu()
+    }
+    fn end(&self, i: Duration) -> Duration {
+        thread_cpu().saturating_sub(i)
+    }
+    fn add(&self, v1: &Duration, v2: &Duration) -> Duration {
+        *v1 + *v2
+    }
+    fn zero(&self) -> Duration {
+        Duration::ZERO
+    }
+    fn to_f64(&self, val: &Duration) -> f64 {
+        val.as_nanos() as f64
+    }
+    fn formatter(&self) -> &dyn ValueFormatter {
+        WALL.formatter()
+    }
+}
 
 /// How much to do.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -145,6 +191,7 @@ fn selected(scene: Scene, filter: &Option<String>) -> bool {
 
 fn run_criterion(mode: Mode, filter: &Option<String>) {
     let mut c = Criterion::default()
+        .with_measurement(ThreadCpu)
         .warm_up_time(Duration::from_millis(1500))
         .measurement_time(Duration::from_secs(4))
         .sample_size(20)
@@ -239,21 +286,25 @@ fn extras(scene: Scene, variants: &[Variant], mode: Mode) -> Value {
             (target.as_secs_f64() / one.as_secs_f64()).ceil().max(2.0) as usize
         })
         .collect();
-    let mut times: Vec<Vec<f64>> = vec![Vec::new(); benches.len()];
+    let mut cpu: Vec<Vec<f64>> = vec![Vec::new(); benches.len()];
+    let mut wall: Vec<Vec<f64>> = vec![Vec::new(); benches.len()];
     for r in 0..rounds {
         for k in 0..benches.len() {
             let i = (k + r) % benches.len();
             // One untimed step: the other worlds just ran and evicted this one's caches.
             benches[i].step();
-            let t = Instant::now();
+            let (c0, t) = (thread_cpu(), Instant::now());
             for _ in 0..block[i] {
                 benches[i].step();
             }
-            times[i].push(t.elapsed().as_secs_f64() * 1e9 / block[i] as f64);
+            let n = block[i] as f64;
+            wall[i].push(t.elapsed().as_secs_f64() * 1e9 / n);
+            cpu[i].push((thread_cpu() - c0).as_secs_f64() * 1e9 / n);
         }
     }
-    for (row, t) in rows.iter_mut().zip(times.iter_mut()) {
-        row["paired_ns_per_step"] = json!(median(t));
+    for ((row, c), w) in rows.iter_mut().zip(cpu.iter_mut()).zip(wall.iter_mut()) {
+        row["paired_ns_per_step"] = json!(median(c));
+        row["paired_wall_ns_per_step"] = json!(median(w));
     }
     json!({
         "name": scene.name(),
