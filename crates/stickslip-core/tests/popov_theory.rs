@@ -7,6 +7,9 @@
 //! depends on (α, β) only, not on the mean indentation; the numeric solver of Eq. 9 reduces to
 //! Eq. 4, 6 and 8 for a single oscillation direction and never yields μ_s > μ0.
 
+#[path = "../../../tests/support/deterministic.rs"]
+mod support;
+
 use proptest::prelude::*;
 use std::f64::consts::TAU;
 use stickslip_core::popov::{
@@ -297,7 +300,7 @@ fn any_oscillation() -> impl Strategy<Value = Option<Oscillation>> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
+    #![proptest_config(support::deterministic(64))]
 
     #[test]
     fn superimposed_static_friction_never_exceeds_mu0(

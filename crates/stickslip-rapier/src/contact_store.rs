@@ -24,13 +24,15 @@ pub(crate) struct ContactKey {
     pub features: u64,
 }
 
-/// The state kept per active contact manifold: 64 bytes.
+/// The state kept per active contact manifold: 68 bytes.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct ContactRecord {
     pub c1: ColliderHandle,
     pub c2: ColliderHandle,
     /// Friction-law state s⃗ (tangential spring force, N) in world coordinates.
     pub force: Vector,
+    /// Friction-law break-away progress σ (elasto-plastic law; 0 otherwise).
+    pub slide: f32,
     /// Stick anchor on collider 1, in collider 1's frame.
     pub anchor1: Vector,
     /// Stick anchor on collider 2, in collider 2's frame.
@@ -54,6 +56,7 @@ impl ContactRecord {
             c1: key.c1,
             c2: key.c2,
             force: Vector::ZERO,
+            slide: 0.0,
             anchor1: Vector::ZERO,
             anchor2: Vector::ZERO,
             inner_user_data: 0,
@@ -236,8 +239,8 @@ mod tests {
     }
 
     #[test]
-    fn record_is_64_bytes() {
-        assert!(std::mem::size_of::<ContactRecord>() <= 64);
+    fn record_is_68_bytes() {
+        assert!(std::mem::size_of::<ContactRecord>() <= 68);
     }
 
     #[test]

@@ -192,6 +192,7 @@ impl<H: PhysicsHooks> StickSlip<H> {
         if !(f_n > 0.0 && f_n.is_finite()) {
             // First step of a contact: no solver load yet, hold with the static coefficient.
             rec.force = Vector::ZERO;
+            rec.slide = 0.0;
             rec.regime = regime_code(Regime::Sticking);
             limit = match law {
                 Law::Regularized(_) => law.sliding_coefficient(speed),
@@ -221,23 +222,27 @@ impl<H: PhysicsHooks> StickSlip<H> {
                 stiffness_normal_force: f_mean,
             };
             // Holding: the law's state is what the constraint carried (read back).
-            let mut state = FrictionState { force: measured };
+            let mut state = FrictionState::with_force(measured);
             let mut out = law.step(&mut state, &input([0.0; 2]));
             // A constraint that hit the law's capacity last step has yielded (break-away),
             // however slow the slip still is: from here the law integrates the slip.
             let saturated = vec2::norm(measured) >= 0.999 * out.limit * f_n && speed > 0.0;
             holding = slow && !saturated;
             if !holding {
-                state = FrictionState {
-                    force: if slow {
-                        measured
-                    } else {
-                        basis.project(rec.force)
-                    },
+                // Slipping on from a held state starts from what the constraint carried (not
+                // broken away); a contact already slipping keeps its law state.
+                state = if slow {
+                    FrictionState::with_force(measured)
+                } else {
+                    FrictionState {
+                        force: basis.project(rec.force),
+                        slide: rec.slide as f64,
+                    }
                 };
                 out = law.step(&mut state, &input(vec2::scale(slip, dt)));
             }
             rec.force = basis.lift(state.force);
+            rec.slide = state.slide as f32;
             rec.regime = regime_code(if holding && out.regime == Regime::Sliding {
                 Regime::StickSlip
             } else {

@@ -4,9 +4,12 @@
 //! - [`ForceProfile`]: a validated piecewise-linear F(t); [`ForceProfile::example1`] gives the
 //!   three phases of the seed (sticking just below break-away, stick-slip then sliding,
 //!   slip-stick back to rest).
-//! - [`simulate`]: EP and Regul as smooth ODEs (state [x, v, μ]); Phys and Coulomb as the exact
+//! - [`simulate`]: EP (state [x, v, μ, σ], arcs between the law's reset events) and Regul as
+//!   smooth ODEs; Phys and Coulomb as the exact
 //!   switched system: sliding arcs integrated up to the event v = 0, sticking arcs resolved
 //!   from the profile in closed form.
+//! - [`BeltSpring`]: the mass–spring on a moving belt with EP (the stick-slip oscillator), and
+//!   its analytic period for static/kinetic Coulomb friction.
 //! - [`Integrator`]: explicit Runge–Kutta–Fehlberg 4(5) or Dormand–Prince 5(4) (the ode45
 //!   analogue), or the L-stable ESDIRK 3(2) (an implicit stiff method in the spirit of ode23s).
 
@@ -14,7 +17,9 @@ mod profile;
 mod simulate;
 
 pub use profile::ForceProfile;
-pub use simulate::{BlockRun, Integrator, PhaseSummary, RunStats, SimError, Tolerances, simulate};
+pub use simulate::{
+    BeltSpring, BlockRun, Integrator, PhaseSummary, RunStats, SimError, Tolerances, simulate,
+};
 
 use crate::error::{ParamError, positive};
 use crate::law::Law;

@@ -148,7 +148,7 @@ pub fn simulate(
 ) -> Result<BlockRun, SimError> {
     let started = Instant::now();
     let mut run = match block.law() {
-        Law::ElastoPlastic(l) => smooth(block, profile, integrator, tol, Smooth::Ep(l))?,
+        Law::ElastoPlastic(l) => elasto_plastic(block, profile, integrator, tol, l)?,
         Law::Regularized(l) => smooth(block, profile, integrator, tol, Smooth::Regul(l))?,
         Law::Physical(l) => switched(block, profile, integrator, tol, l.mu_ba(), l.curve())?,
         Law::Coulomb(l) => {
@@ -180,11 +180,10 @@ pub fn simulate(
 }
 
 enum Smooth<'a> {
-    Ep(&'a ElastoPlastic),
     Regul(&'a Regularized),
 }
 
-/// EP and Regul: m ẍ = F(t) − F_n μ, with μ the EP state (Eq. 4b) or μ(ġ).
+/// Regul: m ẍ = F(t) − F_n μ(ġ).
 struct SmoothOde<'a> {
     mass: f64,
     f_n: f64,
@@ -195,7 +194,6 @@ struct SmoothOde<'a> {
 impl SmoothOde<'_> {
     fn mu(&self, y: &[f64; 3]) -> f64 {
         match self.law {
-            Smooth::Ep(_) => y[2],
             Smooth::Regul(l) => l.coefficient(y[1]),
         }
     }
@@ -205,10 +203,7 @@ impl ODE<f64, [f64; 3]> for SmoothOde<'_> {
     fn diff(&self, t: f64, y: &[f64; 3], dydt: &mut [f64; 3]) {
         dydt[0] = y[1];
         dydt[1] = (self.profile.value(t) - self.f_n * self.mu(y)) / self.mass;
-        dydt[2] = match self.law {
-            Smooth::Ep(l) => l.rate(y[2], y[1]),
-            Smooth::Regul(_) => 0.0,
-        };
+        dydt[2] = 0.0;
     }
 }
 
@@ -259,6 +254,143 @@ fn smooth(
         run.mu.push(ode.mu(y));
     }
     Ok(run)
+}
+
+/// EP: m ẍ = F(t, x) − F_n μ with the law's state (μ, σ) (Eq. 4b, latched switch) driven by
+/// the slip ġ = ẋ − v_s against a surface moving at v_s; y = [x, v, μ, σ]. The reset σ = 0 when
+/// the slip turns against the state is the event that ends an arc.
+struct EpOde<'a> {
+    mass: f64,
+    f_n: f64,
+    external: &'a dyn Fn(f64, f64) -> f64,
+    surface: f64,
+    law: &'a ElastoPlastic,
+}
+
+impl ODE<f64, [f64; 4]> for EpOde<'_> {
+    fn diff(&self, t: f64, y: &[f64; 4], dydt: &mut [f64; 4]) {
+        dydt[0] = y[1];
+        dydt[1] = ((self.external)(t, y[0]) - self.f_n * y[2]) / self.mass;
+        let (dmu, dsigma) = self.law.rates(y[2], y[3], y[1] - self.surface);
+        dydt[2] = dmu;
+        dydt[3] = dsigma;
+    }
+}
+
+impl Event<f64, [f64; 4]> for EpOde<'_> {
+    fn config(&self) -> EventConfig {
+        EventConfig::new(CrossingDirection::Negative, Some(1))
+    }
+    fn event(&self, _t: f64, y: &[f64; 4]) -> f64 {
+        // Only a latched contact has something to reset.
+        if y[3] > 0.0 {
+            y[2] * (y[1] - self.surface)
+        } else {
+            1.0
+        }
+    }
+}
+
+/// Integrates `ode` from `y0` at t = 0 to `end` arc by arc (an arc ends at a reset event).
+fn ep_arcs(
+    ode: &EpOde<'_>,
+    y0: [f64; 4],
+    end: f64,
+    integrator: Integrator,
+    tol: Tolerances,
+) -> Result<BlockRun, SimError> {
+    let mut run = empty_run();
+    let (mut t, mut y) = (0.0, y0);
+    // A reset leaves σ = 0, so the next arc cannot end at once on the same event.
+    while t < end {
+        let sol = solve_with!(
+            integrator,
+            tol,
+            IVP::ode(ode, t, end, y).even(OUTPUT_DT).event(ode)
+        )?;
+        add_stats(&mut run, &sol.steps, &sol.evals);
+        let skip = usize::from(!run.t.is_empty());
+        for (ti, yi) in sol.t.iter().zip(&sol.y).skip(skip) {
+            run.t.push(*ti);
+            run.x.push(yi[0]);
+            run.v.push(yi[1]);
+            run.mu.push(yi[2]);
+        }
+        let t_last = *sol.t.last().unwrap_or(&end);
+        y = *sol.y.last().unwrap_or(&y);
+        y[3] = 0.0;
+        // Guard against a zero-length arc looping forever.
+        t = if t_last > t { t_last } else { t + 1e-9 };
+    }
+    Ok(run)
+}
+
+fn elasto_plastic(
+    block: &Block,
+    profile: &ForceProfile,
+    integrator: Integrator,
+    tol: Tolerances,
+    law: &ElastoPlastic,
+) -> Result<BlockRun, SimError> {
+    let external = |t: f64, _x: f64| profile.value(t);
+    let ode = EpOde {
+        mass: block.mass(),
+        f_n: block.normal_force(),
+        external: &external,
+        surface: 0.0,
+        law,
+    };
+    ep_arcs(&ode, [0.0; 4], profile.end(), integrator, tol)
+}
+
+/// A block of mass m held by a spring of stiffness k to a fixed wall, lying on a belt that
+/// moves at v_b: m ẍ = −k x − F_n μ with slip ġ = ẋ − v_b. The classic stick-slip oscillator.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BeltSpring {
+    /// Mass (kg).
+    pub mass: f64,
+    /// Gravity (m/s²): F_n = m g.
+    pub gravity: f64,
+    /// Spring stiffness k (N/m).
+    pub stiffness: f64,
+    /// Belt velocity v_b (m/s).
+    pub belt_velocity: f64,
+}
+
+impl BeltSpring {
+    /// Integrates the oscillator with the elasto-plastic law `law` from x = 0, riding the belt,
+    /// to `t_end`.
+    pub fn simulate(
+        &self,
+        law: &ElastoPlastic,
+        t_end: f64,
+        integrator: Integrator,
+        tol: Tolerances,
+    ) -> Result<BlockRun, SimError> {
+        let k = self.stiffness;
+        let spring = |_t: f64, x: f64| -k * x;
+        let ode = EpOde {
+            mass: self.mass,
+            f_n: self.mass * self.gravity,
+            external: &spring,
+            surface: self.belt_velocity,
+            law,
+        };
+        let mut run = ep_arcs(&ode, [0.0, self.belt_velocity, 0.0, 0.0], t_end, integrator, tol)?;
+        run.law = "ep";
+        Ok(run)
+    }
+
+    /// The stick-slip period with static coefficient `mu_s` and constant kinetic coefficient
+    /// `mu_k` < `mu_s` (Coulomb): sticking from x_k − Δ to x_k + Δ at belt speed, then a
+    /// harmonic slip arc back, T = 2Δ/v_b + (π + 2 atan(v_b/(ωΔ)))/ω with ω = √(k/m),
+    /// Δ = (μ_s − μ_k) m g/k.
+    pub fn period(&self, mu_s: f64, mu_k: f64) -> f64 {
+        let omega = (self.stiffness / self.mass).sqrt();
+        let delta = (mu_s - mu_k) * self.mass * self.gravity / self.stiffness;
+        let v_b = self.belt_velocity;
+        2.0 * delta / v_b + (std::f64::consts::PI + 2.0 * (v_b / (omega * delta)).atan()) / omega
+    }
 }
 
 /// A sliding arc of the switched model: m ẍ = F(t) − F_n μ_ve(|ẋ|) sgn ẋ, stopping when the

@@ -22,7 +22,7 @@ mod physical;
 mod regularized;
 
 pub use coulomb::Coulomb;
-pub use elasto_plastic::ElastoPlastic;
+pub use elasto_plastic::{ElastoPlastic, EpVariant};
 pub use physical::Physical;
 pub use regularized::{Regularization, Regularized};
 
@@ -30,13 +30,24 @@ pub use crate::switch::Regime;
 use crate::vec2::Vec2;
 use serde::{Deserialize, Serialize};
 
-/// The per-contact state every law uses: 16 bytes.
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
+/// The per-contact state every law uses: 24 bytes.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct FrictionState {
     /// Tangential force carried by the contact, s⃗ = F_n μ⃗ (N), pointing along the slip it
     /// resists. The elasto-plastic law keeps its elastic spring force here; memoryless laws
     /// keep the last force they applied (for read-back only).
     pub force: Vec2,
+    /// Break-away progress σ ∈ [0, 1] of the elasto-plastic law (0: not broken away, 1:
+    /// sliding on the sliding curve; see [`ElastoPlastic`]). Other laws leave it 0.
+    #[serde(default)]
+    pub slide: f64,
+}
+
+impl FrictionState {
+    /// A state carrying spring force `force` that has not broken away.
+    pub fn with_force(force: Vec2) -> Self {
+        FrictionState { force, slide: 0.0 }
+    }
 }
 
 /// What happened at a contact over one step.
@@ -120,7 +131,7 @@ pub trait FrictionLaw: Send + Sync + std::fmt::Debug {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "law", rename_all = "kebab-case")]
 pub enum Law {
-    /// The seed's elasto-plastic law ("EP").
+    /// The seed's elasto-plastic law ("EP"), latched by default (see [`ElastoPlastic`]).
     #[serde(rename = "ep")]
     ElastoPlastic(ElastoPlastic),
     /// The exact switched model ("Phys").
@@ -180,6 +191,7 @@ impl FrictionLaw for Law {
 /// Output for a contact without load: no friction, state relaxed.
 pub(crate) fn unloaded(state: &mut FrictionState) -> StepOutput {
     state.force = [0.0; 2];
+    state.slide = 0.0;
     StepOutput {
         mu: [0.0; 2],
         force: [0.0; 2],
