@@ -196,7 +196,11 @@ fn falling_curve_two_step_cycles_do_not_return_energy() {
             .unwrap(),
     ] {
         for amp in [1e-6, 3e-6, 1e-5, 3e-5, 1e-4, 1e-3] {
-            for (a, b) in [([1.0, 0.0], [0.3, 0.9]), ([1.0, 0.2], [-0.7, 0.6]), ([0.5, 0.0], [1.0, 0.0])] {
+            for (a, b) in [
+                ([1.0, 0.0], [0.3, 0.9]),
+                ([1.0, 0.2], [-0.7, 0.6]),
+                ([0.5, 0.0], [1.0, 0.0]),
+            ] {
                 let steps = [scale(a, amp), scale(b, amp)];
                 let back = [scale(b, -amp), scale(a, -amp)];
                 let (d, worst) = cycle(&l, steps.iter().chain(back.iter()), 0.022, 1.0);
@@ -224,7 +228,11 @@ fn reference_dissipation(l: &ElastoPlastic, legs: &[(f64, f64)]) -> f64 {
         let f = |mu: f64, sigma: f64| {
             let (dmu, dsigma) = l.rates(mu, sigma, v);
             let (lo, hi) = l.band(sigma, m);
-            (dmu / v.abs(), dsigma / v.abs(), alpha(mu.abs(), lo, hi) * mu * mu / m)
+            (
+                dmu / v.abs(),
+                dsigma / v.abs(),
+                alpha(mu.abs(), lo, hi) * mu * mu / m,
+            )
         };
         for _ in 0..n {
             let k1 = f(mu, sigma);
@@ -260,10 +268,15 @@ fn dissipation_over_a_cycle_converges_to_the_continuous_laws() {
         for &(length, v) in &legs {
             let steps = (length / (v.abs() * dt)).round() as usize;
             for _ in 0..steps {
-                got += l.step(&mut s, &StepInput::new([v * dt, 0.0], dt, 1.0)).dissipated;
+                got += l
+                    .step(&mut s, &StepInput::new([v * dt, 0.0], dt, 1.0))
+                    .dissipated;
             }
         }
-        assert!((got - expect).abs() < 0.01 * expect, "{got} vs continuous {expect}");
+        assert!(
+            (got - expect).abs() < 0.01 * expect,
+            "{got} vs continuous {expect}"
+        );
     }
 }
 

@@ -43,7 +43,9 @@ fn curves() -> Vec<(&'static str, f64, f64, Curve)> {
 
 #[test]
 fn steady_sliding_equals_the_sliding_curve() {
-    let speeds: Vec<f64> = (0..=10).map(|i| 10f64.powf(-4.0 + 0.5 * i as f64)).collect();
+    let speeds: Vec<f64> = (0..=10)
+        .map(|i| 10f64.powf(-4.0 + 0.5 * i as f64))
+        .collect();
     let mut worst = 0.0f64;
     for (name, mu_ba, mu_max, curve) in curves() {
         for c in [1e3, 1e4, 1e5, 1e6] {
@@ -103,11 +105,26 @@ fn block_run(law: Law, integrator: Integrator) -> stickslip::core::block::BlockR
     let f_ba = 0.5 * M * G;
     let profile = ForceProfile::new(
         vec![0.0, 0.5, 1.0, 1.2, 1.5, 1.6, 3.0],
-        vec![0.0, 0.95 * f_ba, 0.95 * f_ba, 1.3 * f_ba, 1.3 * f_ba, 0.0, 0.0],
+        vec![
+            0.0,
+            0.95 * f_ba,
+            0.95 * f_ba,
+            1.3 * f_ba,
+            1.3 * f_ba,
+            0.0,
+            0.0,
+        ],
     )
     .unwrap();
     let block = Block::new(M, G, law).unwrap();
-    simulate(&block, &profile, integrator, Tolerances::default(), &[1.0, 2.0, 3.0]).unwrap()
+    simulate(
+        &block,
+        &profile,
+        integrator,
+        Tolerances::default(),
+        &[1.0, 2.0, 3.0],
+    )
+    .unwrap()
 }
 
 #[test]
@@ -129,12 +146,24 @@ fn stribeck_block_follows_the_switched_model() {
         assert!(ep.max_displacement_between(0.0, 1.0) <= g_ba);
         let xe = ep.final_displacement();
         println!("{integrator:?}: EP {xe:.5} m, Phys {xp:.5} m");
-        assert!(((xe - xp) / xp).abs() < 0.02, "{integrator:?}: EP {xe} vs Phys {xp}");
+        assert!(
+            ((xe - xp) / xp).abs() < 0.02,
+            "{integrator:?}: EP {xe} vs Phys {xp}"
+        );
         // Back to rest at the end (slip-stick): over the last 0.3 s the block only moves
         // within the elastic range of the contact (|μ| ≤ μ_max, so ±μ_max/c).
-        let tail: Vec<f64> = ep.t.iter().zip(&ep.x).filter(|(t, _)| **t >= 2.7).map(|(_, x)| *x).collect();
-        let spread = tail.iter().cloned().fold(f64::MIN, f64::max) - tail.iter().cloned().fold(f64::MAX, f64::min);
-        assert!(spread <= 2.0 * 0.55 / c, "still moving at the end: {spread} m");
+        let tail: Vec<f64> =
+            ep.t.iter()
+                .zip(&ep.x)
+                .filter(|(t, _)| **t >= 2.7)
+                .map(|(_, x)| *x)
+                .collect();
+        let spread = tail.iter().cloned().fold(f64::MIN, f64::max)
+            - tail.iter().cloned().fold(f64::MAX, f64::min);
+        assert!(
+            spread <= 2.0 * 0.55 / c,
+            "still moving at the end: {spread} m"
+        );
     }
     // The literal law slides with μ ≥ μ_ba and falls far short.
     let literal = ElastoPlastic::new(c, 0.5, 0.55, issue_curve())

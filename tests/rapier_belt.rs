@@ -1,12 +1,13 @@
 //! Stick-slip of a mass–spring on a moving belt in a real rapier world. The belt is the
 //! ground with a surface velocity set by the user's own conveyor hook, which the stickslip
-//! modifier wraps. Invariant: with the exact switched law (break-away μ_ba above the sliding
-//! coefficient μ_k) the stick-slip period is within 2 % of the analytic
+//! modifier wraps. Invariant: with the exact switched law and with the default elasto-plastic
+//! law (break-away μ_ba above the sliding coefficient μ_k; c = 1e5…1e7 1/m, g_ba ≤ 5 µm) the
+//! stick-slip period is within 2 % of the analytic
 //! T = 2Δ/v_b + (π + 2 atan(v_b/(ωΔ)))/ω, ω = √(k/m), Δ = (μ_ba − μ_k) N/k; plain Coulomb
 //! (Δ = 0) gives the limit T = 2π/ω, the block only touching belt speed once a cycle.
 
 use rapier3d::prelude::*;
-use stickslip::core::law::{Coulomb, Law, Physical};
+use stickslip::core::law::{Coulomb, ElastoPlastic, Law, Physical};
 use stickslip::core::sliding_curve::Curve;
 use stickslip::rapier::scenes::{BoxOnGround, Conveyor};
 use stickslip::rapier::{FrictionMaterial, StickSlip};
@@ -18,8 +19,9 @@ const MU_BA: f64 = 0.5;
 const MU_K: f64 = 0.3;
 const G: f64 = 9.81;
 
-/// Stick onset times of the block riding the belt under `law`.
-fn stick_onsets(law: Law, seconds: f64) -> Vec<f64> {
+/// Times where the block's velocity falls through v_b/2 (once per stick-slip cycle: the slip
+/// arc; robust against the elastic ringing of a compliant contact after re-sticking).
+fn slip_marks(law: Law, seconds: f64) -> Vec<f64> {
     let dt = 1.0 / 480.0;
     let mut scene = BoxOnGround {
         half: 0.1,
@@ -36,27 +38,28 @@ fn stick_onsets(law: Law, seconds: f64) -> Vec<f64> {
     };
     let mut modifier = StickSlip::with_hooks(FrictionMaterial::new(law), conveyor);
     modifier.attach(&mut scene.world.colliders, scene.ground, None);
-    let mut onsets = Vec::new();
-    let mut was_stuck = false;
+    let mut marks = Vec::new();
+    let mut v_prev = scene.vx();
     for k in 0..(seconds / dt) as usize {
         let x = scene.x();
         scene.set_force(Vector::new((-K * x) as f32, 0.0, 0.0));
         modifier.step(&mut scene.world);
         let v = scene.vx();
-        let stuck = (v - V_B).abs() < 1e-3;
-        if stuck && !was_stuck && k > 0 {
-            onsets.push((k + 1) as f64 * dt);
+        let level = 0.5 * V_B;
+        if v_prev >= level && v < level {
+            let w = (v_prev - level) / (v_prev - v);
+            marks.push((k as f64 + w) * dt);
         }
-        was_stuck = stuck;
+        v_prev = v;
     }
-    onsets
+    marks
 }
 
 /// Measured mean stick-slip period against T(Δ) for break-away `mu_s` and sliding `mu_k`.
 fn check_period(law: Law, mu_s: f64, mu_k: f64) {
-    let onsets = stick_onsets(law, 8.0);
-    let periods: Vec<f64> = onsets.windows(2).skip(2).map(|w| w[1] - w[0]).collect();
-    assert!(periods.len() >= 5, "too few stick-slip cycles: {onsets:?}");
+    let marks = slip_marks(law, 8.0);
+    let periods: Vec<f64> = marks.windows(2).skip(1).map(|w| w[1] - w[0]).collect();
+    assert!(periods.len() >= 5, "too few stick-slip cycles: {marks:?}");
     let measured = periods.iter().sum::<f64>() / periods.len() as f64;
     let omega = (K / M).sqrt();
     let delta = (mu_s - mu_k) * M * G / K;
@@ -85,4 +88,17 @@ fn stick_slip_period_matches_the_analytic_solution() {
 #[test]
 fn plain_coulomb_period_is_the_zero_excess_limit() {
     check_period(Law::Coulomb(Coulomb::new(MU_K).unwrap()), MU_K, MU_K);
+}
+
+#[test]
+fn elasto_plastic_period_with_static_above_kinetic_matches_the_analytic_solution() {
+    // μ_ba = μ_max = 0.5 and a flat sliding curve at 0.3: static above kinetic friction. The
+    // law's break-away transition spans a slip of a few μ_k/c; the law runs once per step, one
+    // step behind the slip it resists, so at dt = 1/480 s a soft c = 1e4 (g_ba = 50 µm) lengthens
+    // the period by 3 % here where the core's continuous integration gives 0.35 %
+    // (tests/ep_sliding_curves.rs).
+    for c in [1e5, 1e6, 1e7] {
+        let law = ElastoPlastic::new(c, MU_BA, MU_BA, Curve::constant(MU_K).unwrap()).unwrap();
+        check_period(Law::ElastoPlastic(law), MU_BA, MU_K);
+    }
 }

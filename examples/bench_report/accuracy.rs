@@ -416,7 +416,6 @@ fn popov_mu_bar(
     .build();
     let config = StickSlipConfig {
         stiffness_time: 1.0,
-        stick_speed: 1e-7,
         ..StickSlipConfig::default()
     };
     let mut rig = Rig::new(scene, friction, (), config);

@@ -24,7 +24,7 @@ pub(crate) struct ContactKey {
     pub features: u64,
 }
 
-/// The state kept per active contact manifold: 68 bytes.
+/// The state kept per active contact manifold: 76 bytes.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct ContactRecord {
     pub c1: ColliderHandle,
@@ -33,6 +33,10 @@ pub(crate) struct ContactRecord {
     pub force: Vector,
     /// Friction-law break-away progress σ (elasto-plastic law; 0 otherwise).
     pub slide: f32,
+    /// The friction coefficient limit given to the solver last step (0: none yet).
+    pub limit: f32,
+    /// Slip speed seen last step (m/s; 0 while holding).
+    pub slip_speed: f32,
     /// Stick anchor on collider 1, in collider 1's frame.
     pub anchor1: Vector,
     /// Stick anchor on collider 2, in collider 2's frame.
@@ -57,6 +61,8 @@ impl ContactRecord {
             c2: key.c2,
             force: Vector::ZERO,
             slide: 0.0,
+            limit: 0.0,
+            slip_speed: 0.0,
             anchor1: Vector::ZERO,
             anchor2: Vector::ZERO,
             inner_user_data: 0,
@@ -239,8 +245,8 @@ mod tests {
     }
 
     #[test]
-    fn record_is_68_bytes() {
-        assert!(std::mem::size_of::<ContactRecord>() <= 68);
+    fn record_is_76_bytes() {
+        assert!(std::mem::size_of::<ContactRecord>() <= 76);
     }
 
     #[test]

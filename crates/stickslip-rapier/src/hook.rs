@@ -9,12 +9,14 @@
 //! 1. Measure from the previous solve (the manifold points carry it): normal force
 //!    F_n = Σ impulse / dt, friction ratio μ⃗_meas = friction impulse / normal impulse of the last
 //!    substep, and the slip ġ = v₂ − v₁ − (surface velocity of inner hooks) at the centroid.
-//! 2. **Holding** (|ġ| < `stick_speed`, any law but Regul): the rigid friction constraint is
-//!    the c → ∞ limit of the law's elastic branch, so the state is read back (s⃗ = F_n μ⃗_meas)
-//!    instead of integrating the solver's tiny residual slip, and the solver gets a target
+//! 2. **Holding** (the solver's friction stayed below the limit it was given last step, any
+//!    law but Regul): the rigid friction constraint is the c → ∞ limit of the law's elastic
+//!    branch, so the state is read back (s⃗ = F_n μ⃗_meas, not broken away) instead of
+//!    integrating the solver's tiny residual slip, and the solver gets a target
 //!    tangent velocity pulling the contact back to its stick anchor plus the law's elastic
 //!    displacement s⃗/(c F_n): sticking without creep.
-//!    **Slipping**: the law integrates the slip Δg⃗ = ġ dt (EP: exact/implicit, bounded for
+//!    **Slipping** (the friction reached the limit: the solver let the contact slip): the law
+//!    integrates the slip Δg⃗ = ġ dt (EP: exact/implicit, bounded for
 //!    any c and dt) and the anchor follows.
 //! 3. The solver's friction limit: holding, the law's capacity before it yields (EP:
 //!    max(|μ⃗|, μ_ba); Phys: μ_ba; Coulomb: μ); slipping, the law's own coefficient |μ⃗| after
@@ -51,6 +53,10 @@ fn regime_of(code: u8) -> Regime {
         _ => Regime::Sticking,
     }
 }
+
+/// Relative margin below the imposed limit within which the solver's friction counts as
+/// saturated (the impulses are f32).
+const SATURATION: f64 = 1e-3;
 
 /// Normal and friction measurement of a manifold from the last solve.
 struct Measured {
@@ -183,9 +189,9 @@ impl<H: PhysicsHooks> StickSlip<H> {
         let speed = vec2::norm(slip);
         let meas = measure(m.manifold, dt);
         let f_n = meas.normal_force;
-        // Slow enough to be held by the rigid friction constraint (Regul never holds).
-        let slow = speed < self.config.stick_speed && !matches!(law, Law::Regularized(_));
-        let mut holding = slow;
+        // Regul cannot stick: the solver never holds it.
+        let regul = matches!(law, Law::Regularized(_));
+        let mut holding = !regul;
         let t_mid = self.clock.time + 0.5 * dt;
 
         let mut limit;
@@ -221,26 +227,37 @@ impl<H: PhysicsHooks> StickSlip<H> {
                 normal_force: f_eff,
                 stiffness_normal_force: f_mean,
             };
-            // Holding: the law's state is what the constraint carried (read back).
-            let mut state = FrictionState::with_force(measured);
-            let mut out = law.step(&mut state, &input([0.0; 2]));
-            // A constraint that hit the law's capacity last step has yielded (break-away),
-            // however slow the slip still is: from here the law integrates the slip.
-            let saturated = vec2::norm(measured) >= 0.999 * out.limit * f_n && speed > 0.0;
-            holding = slow && !saturated;
-            if !holding {
-                // Slipping on from a held state starts from what the constraint carried (not
-                // broken away); a contact already slipping keeps its law state.
-                state = if slow {
-                    FrictionState::with_force(measured)
+            // Stick or slip is the solver's verdict under the limit the law gave it last step:
+            // a friction impulse below that limit means the rigid constraint held the contact
+            // (the c → ∞ limit of the law's elastic branch: the state is what the constraint
+            // carried, read back, and the contact has not broken away); at the limit the
+            // contact slipped, and the law integrates the slip from its own state.
+            let mu_meas = vec2::norm(basis.project(meas.mu));
+            let saturated = rec.limit > 0.0 && mu_meas >= (1.0 - SATURATION) * rec.limit as f64;
+            holding = !saturated && !regul;
+            let mut state = if holding {
+                FrictionState::with_force(measured)
+            } else {
+                FrictionState {
+                    force: basis.project(rec.force),
+                    slide: rec.slide as f64,
+                }
+            };
+            let out = if holding {
+                law.step(&mut state, &input([0.0; 2]))
+            } else {
+                // rapier moves the bodies with the velocity *after* this step's solve, so the
+                // slip this step makes is ġ_{k+1} dt. While the slip accelerates (break-away),
+                // extrapolate it, ġ_{k+1} ≈ ġ_k + (|ġ_k| − |ġ_{k−1}|) along ġ_k, at most doubled;
+                // otherwise ġ_k: the law is then not one step behind the motion it resists.
+                let growth = (speed - rec.slip_speed as f64).clamp(0.0, speed);
+                let ahead = if speed > 0.0 {
+                    1.0 + growth / speed
                 } else {
-                    FrictionState {
-                        force: basis.project(rec.force),
-                        slide: rec.slide as f64,
-                    }
+                    1.0
                 };
-                out = law.step(&mut state, &input(vec2::scale(slip, dt)));
-            }
+                law.step(&mut state, &input(vec2::scale(slip, dt * ahead)))
+            };
             rec.force = basis.lift(state.force);
             rec.slide = state.slide as f32;
             rec.regime = regime_code(if holding && out.regime == Regime::Sliding {
@@ -277,6 +294,8 @@ impl<H: PhysicsHooks> StickSlip<H> {
             }
         }
         *m.friction = limit.max(0.0) as f32;
+        rec.limit = *m.friction;
+        rec.slip_speed = if holding { 0.0 } else { speed as f32 };
 
         // Stick anchors: correct drift while holding, follow the contact while slipping.
         let d_el = elastic_displacement(law, rec.force, f_n);
@@ -291,9 +310,12 @@ impl<H: PhysicsHooks> StickSlip<H> {
                 c.tangent_velocity += v_corr;
             }
         } else {
+            // Slipping: the anchors follow the contact. The first held step anchors where the
+            // contact came to rest, with the elastic displacement of the state read back then
+            // (not of the sliding state), so re-sticking does not kick the bodies.
             rec.anchor2 = pose2.inverse_transform_point(p);
             rec.anchor1 = pose1.inverse_transform_point(p - d_el);
-            rec.anchored = true;
+            rec.anchored = holding;
         }
     }
 }
@@ -350,8 +372,11 @@ fn in_plane_limit(
                 VibrationDirection::Normal => {
                     let a_f = s.force_amplitude(f_n);
                     let alpha = a_f / f_n;
+                    // Popov's averaged sliding friction μ̄ = μ_k (1 − α Ψ_w(β)) with the law's
+                    // sliding coefficient at this speed: continuous with the static
+                    // μ_k (1 − α) as the slip speed goes to 0 (Ψ_w(0) = 1).
                     let speed = vec2::norm(slip);
-                    let mu0 = limit.max(1e-12);
+                    let mu0 = law.sliding_coefficient(speed).max(1e-12);
                     let k_t = s.tangential_stiffness().or(match law {
                         Law::ElastoPlastic(l) => Some(l.c() * f_n),
                         _ => None,
@@ -360,10 +385,14 @@ fn in_plane_limit(
                         Some(k) if a_f > 0.0 => s.psi(k * speed / (mu0 * a_f * s.frequency())),
                         _ => 0.0,
                     };
-                    limit * (1.0 - alpha * psi).max(0.0)
+                    mu0 * (1.0 - alpha * psi).max(0.0)
                 }
-                // Popov: the sliding plateau μ0 (Eq. 12) for in-plane vibration.
-                _ => limit,
+                // In-plane: the oscillating force adds to whatever the contact carries, so a
+                // slipping contact (at rest or slow, where its law state holds it elastically)
+                // yields at the same reduced level as a held one (Eq. 6, 8). Popov gives no
+                // closed form of the sliding friction for in-plane vibration; at high slip
+                // speed this underestimates it (issue: superimposed vibration).
+                _ => limit * static_factor(s, limit, Some(f_n), t),
             }
         }
         VibrationMode::TimeResolved => {

@@ -14,9 +14,6 @@ use stickslip_core::error::{in_range, positive};
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct StickSlipConfig {
-    /// Relative tangential speed below which a contact counts as holding (m/s). Holding
-    /// contacts are realized by rapier's rigid friction constraint and read back.
-    pub stick_speed: f64,
     /// Fraction of a holding contact's drift from its stick anchor corrected per step
     /// (through the solver's target tangent velocity); 0 turns anchoring off.
     pub anchor_gain: f64,
@@ -29,7 +26,6 @@ pub struct StickSlipConfig {
 impl Default for StickSlipConfig {
     fn default() -> Self {
         StickSlipConfig {
-            stick_speed: 1e-3,
             anchor_gain: 0.5,
             stiffness_time: 0.2,
         }
@@ -39,7 +35,6 @@ impl Default for StickSlipConfig {
 impl StickSlipConfig {
     /// Checks the values.
     pub fn validate(&self) -> Result<(), ParamError> {
-        positive("stick_speed", self.stick_speed)?;
         in_range("anchor_gain", self.anchor_gain, 0.0, 1.0)?;
         positive("stiffness_time", self.stiffness_time)?;
         Ok(())

@@ -204,10 +204,8 @@ impl PopovDrag {
         }
         .build();
         let law = Law::elasto_plastic(self.c, self.mu0, self.mu0, Curve::constant(self.mu0)?)?;
-        // Drag speeds reach 1e-5 m/s: they count as slipping, not holding.
         let config = crate::StickSlipConfig {
             stiffness_time: self.stiffness_time,
-            stick_speed: 1e-7,
             ..crate::StickSlipConfig::default()
         };
         let mut modifier =

@@ -321,9 +321,6 @@ impl Scenario {
 
     fn config(&self) -> Result<StickSlipConfig, BuildError> {
         let mut cfg = StickSlipConfig::default();
-        if let Some(v) = self.stickslip.stick_speed {
-            cfg.stick_speed = v;
-        }
         if let Some(v) = self.stickslip.anchor_gain {
             cfg.anchor_gain = v;
         }

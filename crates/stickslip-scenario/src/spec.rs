@@ -147,8 +147,6 @@ pub struct StickSlipSpec {
     /// Material of stickslip contacts whose colliders name none (a key of `[material]`).
     /// Defaults to the only material when there is exactly one.
     pub default_material: Option<String>,
-    /// `StickSlipConfig::stick_speed` (m/s).
-    pub stick_speed: Option<f64>,
     /// `StickSlipConfig::anchor_gain`.
     pub anchor_gain: Option<f64>,
 }

@@ -376,7 +376,13 @@ impl BeltSpring {
             surface: self.belt_velocity,
             law,
         };
-        let mut run = ep_arcs(&ode, [0.0, self.belt_velocity, 0.0, 0.0], t_end, integrator, tol)?;
+        let mut run = ep_arcs(
+            &ode,
+            [0.0, self.belt_velocity, 0.0, 0.0],
+            t_end,
+            integrator,
+            tol,
+        )?;
         run.law = "ep";
         Ok(run)
     }
