@@ -180,6 +180,21 @@ impl ContactStore {
         }
     }
 
+    /// Drops every record of a contact involving `collider`.
+    pub fn remove_collider(&mut self, collider: ColliderHandle) {
+        let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
+        let free = self.free.get_mut().unwrap_or_else(|e| e.into_inner());
+        for (i, slot) in slots.iter_mut().enumerate() {
+            let slot = slot.get_mut().unwrap_or_else(|e| e.into_inner());
+            if slot.live && (slot.record.c1 == collider || slot.record.c2 == collider) {
+                slot.live = false;
+                free.push(i as u32);
+            }
+        }
+        let by_key = self.by_key.get_mut().unwrap_or_else(|e| e.into_inner());
+        by_key.retain(|k, _| k.c1 != collider && k.c2 != collider);
+    }
+
     /// The live records.
     pub fn live(&mut self) -> impl Iterator<Item = &ContactRecord> {
         self.slots

@@ -191,14 +191,19 @@ impl<H: PhysicsHooks> StickSlip<H> {
         let f_n = meas.normal_force;
         // Regul cannot stick: the solver never holds it.
         let regul = matches!(law, Law::Regularized(_));
-        let mut holding = !regul;
+        let holding;
         let t_mid = self.clock.time + 0.5 * dt;
 
         let mut limit;
         if !(f_n > 0.0 && f_n.is_finite()) {
-            // First step of a contact: no solver load yet, hold with the static coefficient.
+            // No load: a new contact, or one that lost its load (flight, separation inside
+            // the prediction distance). An unloaded spring relaxes (the law's state goes to
+            // zero) and nothing of the old stick position survives: the contact re-anchors
+            // where it lands and holds up to the static coefficient.
             rec.force = Vector::ZERO;
             rec.slide = 0.0;
+            rec.anchored = false;
+            holding = !regul;
             rec.regime = regime_code(Regime::Sticking);
             limit = match law {
                 Law::Regularized(_) => law.sliding_coefficient(speed),
@@ -310,9 +315,10 @@ impl<H: PhysicsHooks> StickSlip<H> {
                 c.tangent_velocity += v_corr;
             }
         } else {
-            // Slipping: the anchors follow the contact. The first held step anchors where the
-            // contact came to rest, with the elastic displacement of the state read back then
-            // (not of the sliding state), so re-sticking does not kick the bodies.
+            // Slipping: the anchors follow the contact. The first held step (after a slip,
+            // or a landing: an unloaded contact drops its anchors) anchors where the contact
+            // came to rest, with the elastic displacement of the state read back then, so
+            // re-sticking does not kick the bodies.
             rec.anchor2 = pose2.inverse_transform_point(p);
             rec.anchor1 = pose1.inverse_transform_point(p - d_el);
             rec.anchored = holding;

@@ -61,6 +61,8 @@ pub struct StickSlip<H = ()> {
     pub(crate) default_material: FrictionMaterial,
     pub(crate) materials: ColliderMap<FrictionMaterial>,
     pub(crate) vibrations: ColliderMap<VibrationSource>,
+    /// Colliders whose hook flag `attach` turned on.
+    flagged: ColliderMap<()>,
     pub(crate) store: ContactStore,
     pub(crate) clock: Clock,
     pub(crate) inner: H,
@@ -83,6 +85,7 @@ impl<H: PhysicsHooks> StickSlip<H> {
             default_material: material.into(),
             materials: ColliderMap::default(),
             vibrations: ColliderMap::default(),
+            flagged: ColliderMap::default(),
             store: ContactStore::default(),
             clock: Clock::default(),
             inner,
@@ -117,6 +120,13 @@ impl<H: PhysicsHooks> StickSlip<H> {
         material: Option<FrictionMaterial>,
     ) {
         if let Some(c) = colliders.get_mut(collider) {
+            if !c
+                .active_hooks()
+                .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
+            {
+                // Ours to turn off again in `detach`.
+                self.flagged.insert(collider, ());
+            }
             c.set_active_hooks(c.active_hooks() | ActiveHooks::MODIFY_SOLVER_CONTACTS);
         }
         match material {
@@ -127,6 +137,29 @@ impl<H: PhysicsHooks> StickSlip<H> {
                 self.materials.remove(collider);
             }
         }
+    }
+
+    /// Takes `collider` back out of stickslip: drops its material, vibration source, every
+    /// contact state and report involving it, and turns its `MODIFY_SOLVER_CONTACTS` hook off
+    /// again if [`Self::attach`] turned it on (a flag the user had set stays, for their own
+    /// hooks). Its contacts then behave exactly as in plain rapier.
+    pub fn detach(&mut self, colliders: &mut ColliderSet, collider: ColliderHandle) {
+        if let Some(c) = colliders.get_mut(collider) {
+            if self.flagged.remove(collider).is_some() {
+                c.set_active_hooks(c.active_hooks() - ActiveHooks::MODIFY_SOLVER_CONTACTS);
+            }
+            // Without hooks rapier may recycle the pair's manifolds next step, keeping the
+            // friction coefficient this modifier wrote: mark the collider's groups changed
+            // (same value) so that its pairs get a full update with rapier's own friction.
+            let groups = c.solver_groups();
+            c.set_solver_groups(InteractionGroups::none());
+            c.set_solver_groups(groups);
+        }
+        self.materials.remove(collider);
+        self.vibrations.remove(collider);
+        self.store.remove_collider(collider);
+        self.reports
+            .retain(|r| r.collider1 != collider && r.collider2 != collider);
     }
 
     /// Sets the material of a collider (its hook flag must be on, see [`Self::attach`]).
