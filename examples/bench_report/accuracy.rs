@@ -414,10 +414,7 @@ fn popov_mu_bar(
         ..BoxOnGround::default()
     }
     .build();
-    let config = StickSlipConfig {
-        stiffness_time: 1.0,
-        ..StickSlipConfig::default()
-    };
+    let config = StickSlipConfig::default();
     let mut rig = Rig::new(scene, friction, (), config);
     if let (Drive::Source(mode), Some(m)) = (drive, rig.modifier.as_mut()) {
         let src = VibrationSource::new(

@@ -215,7 +215,10 @@ impl<H: PhysicsHooks> StickSlip<H> {
         } else {
             // Mean normal force for the tangential stiffness: filtered, seeded at first load.
             let f_mean = if rec.mean_normal_force > 0.0 {
-                let w = (dt / self.config.stiffness_time).min(1.0);
+                let tau = source.map_or(self.config.stiffness_time, |s| {
+                    self.config.stiffness_time.max(5.0 / s.frequency())
+                });
+                let w = (dt / tau).min(1.0);
                 rec.mean_normal_force as f64 + w * (f_n - rec.mean_normal_force as f64)
             } else {
                 f_n

@@ -18,8 +18,11 @@ pub struct StickSlipConfig {
     /// (through the solver's target tangent velocity); 0 turns anchoring off.
     pub anchor_gain: f64,
     /// Averaging time (s) of the mean normal force F̄ that sets a compliant law's tangential
-    /// stiffness k_t = c·F̄. Keep it longer than vibration periods so that a vibrating load
-    /// changes the friction limit but not the stiffness (Popov's constant k_x).
+    /// stiffness k_t = c·F̄, so that a vibrating load changes the friction limit but not the
+    /// stiffness (Popov's constant k_x). Contacts with a vibration source of frequency f
+    /// average over at least 5/f whatever this is; the default 1 s covers loads that
+    /// oscillate by themselves at ≥ 2 Hz to a few percent. The stiffness only sets the elastic
+    /// range g_ba, never the friction limit, so a slow average costs nothing.
     pub stiffness_time: f64,
 }
 
@@ -27,7 +30,7 @@ impl Default for StickSlipConfig {
     fn default() -> Self {
         StickSlipConfig {
             anchor_gain: 0.5,
-            stiffness_time: 0.2,
+            stiffness_time: 1.0,
         }
     }
 }

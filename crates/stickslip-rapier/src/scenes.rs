@@ -156,10 +156,10 @@ pub struct PopovDrag {
     pub waveform: stickslip_core::waveform::Waveform,
     /// Modulation.
     pub drive: PopovDrive,
-    /// Steps per vibration period (time-resolved needs hundreds; averaged mode needs few).
+    /// Steps per vibration period (time-resolved needs tens; averaged mode needs few).
     pub steps_per_period: usize,
-    /// Averaging time of the mean normal force behind k_t (s), several periods.
-    pub stiffness_time: f64,
+    /// Mass of the dragged sled (kg); its velocity is imposed every step.
+    pub sled_mass: f32,
 }
 
 impl PopovDrag {
@@ -178,7 +178,7 @@ impl PopovDrag {
                 PopovDrive::Source(crate::VibrationMode::Averaged) => 40,
                 _ => 400,
             },
-            stiffness_time: 1.0,
+            sled_mass: 1000.0,
         }
     }
 
@@ -196,7 +196,7 @@ impl PopovDrag {
         let dt = 1.0 / (f * self.steps_per_period as f64);
         let mut scene = BoxOnGround {
             half: 0.1,
-            mass: 1000.0,
+            mass: self.sled_mass,
             gravity: 0.0,
             dt: dt as f32,
             rotations: false,
@@ -204,12 +204,7 @@ impl PopovDrag {
         }
         .build();
         let law = Law::elasto_plastic(self.c, self.mu0, self.mu0, Curve::constant(self.mu0)?)?;
-        let config = crate::StickSlipConfig {
-            stiffness_time: self.stiffness_time,
-            ..crate::StickSlipConfig::default()
-        };
-        let mut modifier =
-            crate::StickSlip::new(crate::FrictionMaterial::new(law)).with_config(config)?;
+        let mut modifier = crate::StickSlip::new(crate::FrictionMaterial::new(law));
         modifier.attach(&mut scene.world.colliders, scene.ground, None);
         if let PopovDrive::Source(mode) = self.drive {
             let src = crate::VibrationSource::new(
@@ -226,7 +221,9 @@ impl PopovDrag {
         // Warm-up: the spring needs ~(1−α)/(αβ) periods to reach the cone, and under a real
         // oscillating load the mean normal force behind k_t ~5 averaging times.
         let settle = match self.drive {
-            PopovDrive::RealLoad => (5.0 * self.stiffness_time * f).ceil() as usize,
+            PopovDrive::RealLoad => {
+                (5.0 * crate::StickSlipConfig::default().stiffness_time * f).ceil() as usize
+            }
             PopovDrive::Source(_) => 0,
         };
         let warm = ((1.0 - self.alpha) / (self.alpha * beta)).ceil() as usize + 3 + settle;
