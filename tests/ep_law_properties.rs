@@ -125,17 +125,39 @@ proptest! {
                 let out = l.step(&mut trial, &StepInput::new([vn * dt, 0.0], dt, f_n));
                 mass * (vn - v) / dt - f - out.force[0]
             };
-            // With kinetic friction below break-away the implicit equation can also have a
-            // breaking-away root far from v; the motion continues on the nearest one, found
-            // by widening the bracket around v until the residual changes sign.
+            // With kinetic friction below break-away the implicit equation can also have
+            // breaking-away roots beside the sticking one; the contact sticks whenever
+            // sticking is consistent (the root of least slip): walk from zero slip towards
+            // it (the residual's sign says which way) and solve in the first interval where
+            // the residual changes sign.
             let mut conv = roots::SimpleConvergency { eps: 1e-15, max_iter: 200 };
             let limit = (v.abs() + (f.abs() + l.mu_max() * f_n) * dt / mass) * 2.0 + 1e-12;
-            let mut span = 1e-12 * limit.max(1e-9);
-            while span < limit && residual(v - span) * residual(v + span) > 0.0 {
-                span *= 2.0;
+            let r0 = residual(0.0);
+            let dir = if r0 > 0.0 { -1.0 } else { 1.0 };
+            // Strides double, each checked on a fine grid: the sticking root and, past
+            // break-away, two sliding ones can share a stride.
+            // First stride: a quarter of the velocity change the elastic branch alone
+            // (slope m/dt + F_n c dt) would need.
+            let (mut near, mut far) = (0.0f64, 0.0f64);
+            let mut stride = 0.25 * r0.abs() / (mass / dt + f_n * l.c() * dt) + 1e-300;
+            'walk: while far.abs() < limit {
+                let start = far;
+                for i in 1..=16 {
+                    let p = start + dir * stride * i as f64 / 16.0;
+                    if residual(p) * r0 <= 0.0 {
+                        far = p;
+                        break 'walk;
+                    }
+                    near = p;
+                }
+                far = near;
+                stride *= 2.0;
             }
-            let span = span.min(limit);
-            let vn = roots::find_root_brent(v - span, v + span, residual, &mut conv).unwrap_or(0.0);
+            let vn = if r0 == 0.0 {
+                0.0
+            } else {
+                roots::find_root_brent(near, far, residual, &mut conv).unwrap_or(0.0)
+            };
             l.step(&mut s, &StepInput::new([vn * dt, 0.0], dt, f_n));
             v = vn;
             x += v * dt;
