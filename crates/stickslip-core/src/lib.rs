@@ -10,6 +10,8 @@
 //! - [`waveform`] and [`popov`]: normalized vibration waveforms and Popov's (2020) theory of
 //!   friction under normal, tangential and transverse oscillation (Ψ_w(β), μ̄, static
 //!   coefficients) plus a time-stepped reference simulator of his spring model.
+//! - [`feeder`]: a rigid-body reference for vibratory feeders (point mass, exact ballistic
+//!   flight, plastic landing with Coulomb impact friction).
 //! - [`block`]: the seed's Example 1, a block under a time-dependent force, integrated with
 //!   adaptive explicit and implicit ODE methods from `differential-equations`.
 #![warn(missing_docs)]
@@ -19,6 +21,7 @@
 pub mod block;
 pub mod chain;
 pub mod error;
+pub mod feeder;
 mod integrate;
 pub mod law;
 pub mod popov;

@@ -203,6 +203,9 @@ impl<H: PhysicsHooks> StickSlip<H> {
             rec.force = Vector::ZERO;
             rec.slide = 0.0;
             rec.anchored = false;
+            // Like a new contact, a landing seeds its mean normal force (the law's stiffness
+            // c·F̄) with its first load: an impact is as stiff as the seed's law, Eq. 4.
+            rec.mean_normal_force = 0.0;
             holding = !regul;
             rec.regime = regime_code(Regime::Sticking);
             limit = match law {
