@@ -3,6 +3,10 @@
 
 use rapier3d::prelude::ColliderHandle;
 
+/// Largest arena index accepted (16.7 million colliders): the map is dense, so an index from
+/// an invalid or forged handle must not size it.
+const MAX_INDEX: u32 = 1 << 24;
+
 /// Values attached to colliders.
 #[derive(Debug, Clone)]
 pub(crate) struct ColliderMap<T> {
@@ -18,6 +22,10 @@ impl<T> Default for ColliderMap<T> {
 impl<T> ColliderMap<T> {
     pub fn insert(&mut self, handle: ColliderHandle, value: T) -> Option<T> {
         let (i, generation) = handle.0.into_raw_parts();
+        if i >= MAX_INDEX {
+            // Not a collider of any set this process can hold: never allocate by it.
+            return None;
+        }
         let i = i as usize;
         if self.slots.len() <= i {
             self.slots.resize_with(i + 1, || None);

@@ -122,6 +122,10 @@ impl<H: PhysicsHooks> StickSlip<H> {
         collider: ColliderHandle,
         material: Option<FrictionMaterial>,
     ) {
+        // A handle that is not in the set is a no-op (never an allocation by its index).
+        if !colliders.contains(collider) {
+            return;
+        }
         if let Some(c) = colliders.get_mut(collider) {
             if !c
                 .active_hooks()
@@ -165,12 +169,14 @@ impl<H: PhysicsHooks> StickSlip<H> {
             .retain(|r| r.collider1 != collider && r.collider2 != collider);
     }
 
-    /// Sets the material of a collider (its hook flag must be on, see [`Self::attach`]).
+    /// Sets the material of a collider (its hook flag must be on, see [`Self::attach`]). A
+    /// handle whose index no collider set of this process could hold (≥ 2²⁴) is ignored.
     pub fn set_material(&mut self, collider: ColliderHandle, material: FrictionMaterial) {
         self.materials.insert(collider, material);
     }
 
-    /// Attaches a vibration source to a collider; its contacts feel it.
+    /// Attaches a vibration source to a collider; its contacts feel it. A handle whose index no
+    /// collider set could hold (≥ 2²⁴, e.g. `ColliderHandle::invalid()`) is ignored.
     pub fn set_vibration(&mut self, collider: ColliderHandle, source: VibrationSource) {
         self.vibrations.insert(collider, source);
     }
@@ -186,8 +192,12 @@ impl<H: PhysicsHooks> StickSlip<H> {
     }
 
     /// Call before each step with the step's parameters.
+    ///
+    /// A step with a non-finite or non-positive `dt` is skipped by the modifier: no contact
+    /// state, clock or total changes (rapier's own step with such a dt is the caller's).
     pub fn begin_step(&mut self, params: &IntegrationParameters) {
-        self.clock.dt = params.dt as f64;
+        let dt = params.dt as f64;
+        self.clock.dt = if dt.is_finite() && dt > 0.0 { dt } else { 0.0 };
         self.clock.step = self.clock.step.wrapping_add(1);
     }
 

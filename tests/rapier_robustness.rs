@@ -1,0 +1,112 @@
+//! Bad input in a running world never crashes, allocates by an untrusted number or poisons
+//! the friction state. Invariants (regressions of reported failures): `attach`,
+//! `set_material` and `set_vibration` with a handle that is not in the collider set
+//! (`ColliderHandle::invalid()`, a huge index) are no-ops that allocate nothing; a step with a
+//! NaN, infinite or negative dt leaves the modifier's clock, totals and contact states as they
+//! were; NaN velocities injected into a body never reach the friction state (reports stay
+//! finite) and the contacts of other bodies carry on unchanged.
+
+use rapier3d::prelude::*;
+use stickslip::core::law::Law;
+use stickslip::core::sliding_curve::Curve;
+use stickslip::core::waveform::Waveform;
+use stickslip::rapier::scenes::BoxOnGround;
+use stickslip::rapier::{
+    Amplitude, FrictionMaterial, StickSlip, VibrationDirection, VibrationMode, VibrationSource,
+};
+
+fn material() -> FrictionMaterial {
+    FrictionMaterial::new(
+        Law::elasto_plastic(1e5, 0.5, 0.5, Curve::constant(0.4).unwrap()).unwrap(),
+    )
+}
+
+#[test]
+fn handles_outside_the_collider_set_are_no_ops() {
+    let mut scene = BoxOnGround::default().build();
+    let mut m = StickSlip::new(material());
+    let forged = ColliderHandle::from_raw_parts(u32::MAX - 1, 7);
+    for h in [ColliderHandle::invalid(), forged] {
+        m.attach(&mut scene.world.colliders, h, Some(material()));
+        m.set_material(h, material());
+        let src = VibrationSource::new(
+            VibrationDirection::Normal,
+            Amplitude::Ratio(0.3),
+            50.0,
+            Waveform::Sine,
+            0.0,
+            VibrationMode::Averaged,
+        )
+        .unwrap();
+        m.set_vibration(h, src);
+        assert!(m.vibration(h).is_none());
+        m.detach(&mut scene.world.colliders, h);
+    }
+    m.attach(&mut scene.world.colliders, scene.ground, None);
+    for _ in 0..10 {
+        m.step(&mut scene.world);
+    }
+    assert_eq!(m.active_contacts(), 1);
+}
+
+#[test]
+fn bad_time_steps_leave_the_modifier_untouched() {
+    let mut scene = BoxOnGround::default().build();
+    let mut m = StickSlip::new(material());
+    m.attach(&mut scene.world.colliders, scene.ground, None);
+    scene.set_force(Vector::new(20.0, 0.0, 0.0));
+    for _ in 0..30 {
+        m.step(&mut scene.world);
+    }
+    let (time, totals) = (m.time(), m.totals());
+    for bad in [f32::NAN, f32::INFINITY, -1.0 / 60.0, 0.0] {
+        let mut params = scene.world.integration_parameters;
+        params.dt = bad;
+        m.begin_step(&params);
+        // (rapier itself is not stepped with the bad dt here: that is the caller's business)
+        m.end_step(
+            &scene.world.narrow_phase,
+            &scene.world.bodies,
+            &scene.world.colliders,
+        );
+        assert_eq!(m.time(), time, "dt {bad}");
+        assert_eq!(m.totals().dissipated_energy, totals.dissipated_energy);
+    }
+    for _ in 0..10 {
+        m.step(&mut scene.world);
+    }
+    assert!(m.time().is_finite() && m.totals().dissipated_energy.is_finite());
+    assert!(m.time() > time);
+}
+
+#[test]
+fn nan_velocities_never_reach_the_friction_state() {
+    let mut world = PhysicsWorld::default();
+    let ground = world.insert_collider(ColliderBuilder::cuboid(20.0, 0.1, 20.0), None);
+    let mut boxes = Vec::new();
+    for i in 0..2 {
+        let (b, _) = world.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(Vector::new(3.0 * i as f32, 0.3, 0.0))
+                .can_sleep(false),
+            ColliderBuilder::cuboid(0.2, 0.2, 0.2).density(1000.0),
+        );
+        boxes.push(b);
+    }
+    let mut m = StickSlip::new(material());
+    m.attach(&mut world.colliders, ground, None);
+    for _ in 0..20 {
+        m.step(&mut world);
+    }
+    world.bodies[boxes[0]].set_linvel(Vector::new(f32::NAN, 0.0, f32::INFINITY), true);
+    for _ in 0..5 {
+        m.step(&mut world);
+        for r in m.reports() {
+            assert!(r.mu.is_finite() && r.limit.is_finite(), "{r:?}");
+        }
+        assert!(m.totals().dissipated_energy.is_finite());
+    }
+    // The healthy box still rests where it was.
+    let p = world.bodies[boxes[1]].translation();
+    assert!(p.is_finite() && (p.x - 3.0).abs() < 1e-3, "{p:?}");
+}
