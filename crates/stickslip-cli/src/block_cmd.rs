@@ -220,10 +220,10 @@ pub fn run(args: &BlockArgs, json: bool) -> Result<(), CliError> {
     if json {
         return output::json(&report);
     }
-    println!("block, law {} , integrator {integrator:?}", r.law);
-    println!("{:>8} {:>14} {:>14}", "t (s)", "x (m)", "v (m/s)");
+    out!("block, law {} , integrator {integrator:?}", r.law);
+    out!("{:>8} {:>14} {:>14}", "t (s)", "x (m)", "v (m/s)");
     for p in &r.phases {
-        println!("{:>8.3} {:>14.6e} {:>14.6e}", p.t, p.x, p.v);
+        out!("{:>8.3} {:>14.6e} {:>14.6e}", p.t, p.x, p.v);
     }
     let mut rows = vec![
         ("stick time (s)", format!("{:.4}", r.stick_time)),

@@ -4,8 +4,9 @@
 //! that returns a typed error, so bad input ends in a clear message and a non-zero exit code,
 //! never a panic.
 
-mod block_cmd;
+#[macro_use]
 mod output;
+mod block_cmd;
 mod run_cmd;
 mod theory_cmd;
 

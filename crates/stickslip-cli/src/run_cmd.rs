@@ -319,13 +319,18 @@ fn print_table(r: &RunReport<'_>) {
     if s.bodies.is_empty() {
         return;
     }
-    println!();
-    println!(
+    out!("");
+    out!(
         "{:<16} {:>10} {:>12} {:>12} {:>12} {:>12}",
-        "body", "kind", "dx m", "dy m", "|d| m", "speed m/s"
+        "body",
+        "kind",
+        "dx m",
+        "dy m",
+        "|d| m",
+        "speed m/s"
     );
     for b in s.bodies.iter().take(TABLE_BODIES) {
-        println!(
+        out!(
             "{:<16} {:>10} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e}",
             b.name,
             format!("{:?}", b.kind).to_lowercase(),
@@ -337,7 +342,7 @@ fn print_table(r: &RunReport<'_>) {
     }
     if s.bodies.len() > TABLE_BODIES {
         let max = s.bodies.iter().map(|b| b.distance).fold(0.0, f64::max);
-        println!(
+        out!(
             "… {} more bodies (largest |d| of all: {max:.4e} m; --json lists every body)",
             s.bodies.len() - TABLE_BODIES
         );
