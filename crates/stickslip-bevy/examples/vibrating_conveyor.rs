@@ -340,7 +340,7 @@ fn keys(
 
 /// The worst regime of each part's contacts sets its colour.
 fn colour_parts(
-    contacts: Res<StickSlipContacts>,
+    contacts: Res<ContactReports>,
     palette: Res<Palette>,
     mut parts: Query<(Entity, &mut MeshMaterial3d<StandardMaterial>), With<Part>>,
 ) {
@@ -366,7 +366,7 @@ fn colour_parts(
 }
 
 fn hud(
-    contacts: Res<StickSlipContacts>,
+    contacts: Res<ContactReports>,
     time: Res<Time<Virtual>>,
     parts: Query<(&Part, &Velocity, &Transform)>,
     shaker: Query<Has<Vibration>, With<ShakerBase>>,

@@ -1,27 +1,39 @@
-//! Components users put on entities. Bridge components are named after bevy_rapier's
-//! (`RigidBody`, `Collider`, `Velocity`, `ExternalForce`, `Friction`), so code reads the same;
-//! the friction layer adds `FrictionLaw`, `Vibration` and `SurfaceVelocity`.
+//! The bridge's components, named after bevy_rapier's (`RigidBody`, `Collider`, `Velocity`,
+//! `ExternalForce`, `Friction`) so that code reads the same, and the handles the plugin adds.
 
 use bevy::prelude::*;
 use rapier3d::prelude as rp;
-use stickslip_rapier::{FrictionMaterial, VibrationSource};
 
-/// A rigid body. Its entity's `Transform` is its pose (top-level entities; scale is ignored).
+/// A rigid body. Its entity's `Transform` is its pose: put bodies at the top level of the
+/// hierarchy (rapier ignores scale).
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
 #[require(Transform, Velocity)]
 pub enum RigidBody {
     /// Moved by forces, contacts and gravity.
     Dynamic,
-    /// Never moves.
+    /// Never moves (unless its `Transform` is set, which teleports it).
     Fixed,
-    /// Follows its `Transform`, which the user animates (velocity derived by rapier).
+    /// Follows its `Transform`, which the user animates; rapier derives its velocity, so
+    /// what it carries feels a moving surface.
     KinematicPositionBased,
     /// Follows its `Velocity`, which the user sets.
     KinematicVelocityBased,
 }
 
-/// A collision shape. On a `RigidBody` entity, or on a child of one (its `Transform` is then
-/// the offset), or alone (a fixed collider at its `Transform`).
+impl RigidBody {
+    pub(crate) fn rapier_type(self) -> rp::RigidBodyType {
+        match self {
+            RigidBody::Dynamic => rp::RigidBodyType::Dynamic,
+            RigidBody::Fixed => rp::RigidBodyType::Fixed,
+            RigidBody::KinematicPositionBased => rp::RigidBodyType::KinematicPositionBased,
+            RigidBody::KinematicVelocityBased => rp::RigidBodyType::KinematicVelocityBased,
+        }
+    }
+}
+
+/// A collision shape: on a `RigidBody` entity, on a child of one (its `Transform` is then the
+/// offset from the body), or alone (a fixed collider where its `Transform`, composed with its
+/// parent's if it has one, puts it). Replacing it changes the rapier shape in place.
 #[derive(Component, Clone)]
 #[require(Transform)]
 pub struct Collider {
@@ -32,21 +44,30 @@ pub struct Collider {
 impl Collider {
     /// A box with half extents.
     pub fn cuboid(hx: f32, hy: f32, hz: f32) -> Self {
-        Collider {
-            shape: rp::SharedShape::cuboid(hx, hy, hz),
-        }
+        rp::SharedShape::cuboid(hx, hy, hz).into()
     }
     /// A ball.
     pub fn ball(radius: f32) -> Self {
-        Collider {
-            shape: rp::SharedShape::ball(radius),
-        }
+        rp::SharedShape::ball(radius).into()
     }
-    /// A capsule along the local y axis.
+    /// A capsule along the local y axis (half height of its cylinder part, radius).
     pub fn capsule_y(half_height: f32, radius: f32) -> Self {
-        Collider {
-            shape: rp::SharedShape::capsule_y(half_height, radius),
-        }
+        rp::SharedShape::capsule_y(half_height, radius).into()
+    }
+    /// A capsule between two local points.
+    pub fn capsule(a: Vec3, b: Vec3, radius: f32) -> Self {
+        use crate::convert::to_rapier;
+        rp::SharedShape::capsule(to_rapier(a), to_rapier(b), radius).into()
+    }
+    /// A cylinder along the local y axis.
+    pub fn cylinder(half_height: f32, radius: f32) -> Self {
+        rp::SharedShape::cylinder(half_height, radius).into()
+    }
+}
+
+impl From<rp::SharedShape> for Collider {
+    fn from(shape: rp::SharedShape) -> Self {
+        Collider { shape }
     }
 }
 
@@ -81,8 +102,8 @@ pub struct ExternalForce {
 #[derive(Component, Debug, Clone, Copy, PartialEq)]
 pub struct Density(pub f32);
 
-/// rapier's own Coulomb friction coefficient of a collider that is not under stickslip
-/// (default 0.5).
+/// rapier's own Coulomb friction coefficient of a collider whose contacts are not under
+/// stickslip (default 0.5), e.g. a trough's side walls.
 #[derive(Component, Debug, Clone, Copy, PartialEq)]
 pub struct Friction(pub f32);
 
@@ -95,33 +116,10 @@ pub struct AllowSleep;
 #[derive(Component, Debug, Clone, Copy, PartialEq, Default)]
 pub struct LockRotations;
 
-/// Puts a collider's contacts under stickslip's friction: its own material, or the
-/// [`crate::DefaultFriction`] resource's with `FrictionLaw(None)` / `FrictionLaw::default()`.
-/// Removing it takes the collider back to plain rapier friction.
-#[derive(Component, Debug, Clone, Default, PartialEq)]
-pub struct FrictionLaw(pub Option<FrictionMaterial>);
-
-impl FrictionLaw {
-    /// A collider with its own material.
-    pub fn new(material: impl Into<FrictionMaterial>) -> Self {
-        FrictionLaw(Some(material.into()))
-    }
-}
-
-/// A vibration source on a collider (normal, tangential or transverse; time-resolved or
-/// Popov-averaged): every contact of the collider feels it. Insert, change or remove at will.
-#[derive(Component, Debug, Clone)]
-pub struct Vibration(pub VibrationSource);
-
-/// A moving surface (conveyor belt): the velocity (m/s, world frame) its contacts carry
-/// other bodies along with, as rapier's target tangent velocity.
-#[derive(Component, Debug, Clone, Copy, PartialEq, Default)]
-pub struct SurfaceVelocity(pub Vec3);
-
-/// The rapier handle of an entity's body (inserted by the plugin).
+/// The rapier handle of an entity's body (added by the plugin, removed with the body).
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
 pub struct RapierBody(pub rp::RigidBodyHandle);
 
-/// The rapier handle of an entity's collider (inserted by the plugin).
+/// The rapier handle of an entity's collider (added by the plugin, removed with the collider).
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
 pub struct RapierCollider(pub rp::ColliderHandle);

@@ -7,7 +7,7 @@ use std::collections::HashMap;
 use stickslip_core::law::Regime;
 use stickslip_rapier::{ContactReport, WorldTotals};
 
-/// One contact of the last step.
+/// One contact (manifold) of the last step.
 #[derive(Debug, Clone, Copy)]
 pub struct Contact {
     /// Entity of the first collider.
@@ -18,9 +18,17 @@ pub struct Contact {
     pub report: ContactReport,
 }
 
-/// The last step's stickslip contacts and totals.
+impl Contact {
+    /// Whether `entity` is one of the contact's colliders.
+    pub fn involves(&self, entity: Entity) -> bool {
+        self.collider1 == entity || self.collider2 == entity
+    }
+}
+
+/// The last step's stickslip contacts (every `ContactReport` of the modifier, mapped to
+/// entities) and world totals. Updated after every physics step; poll it from any system.
 #[derive(Resource, Debug, Default)]
-pub struct StickSlipContacts {
+pub struct ContactReports {
     /// Every contact with stickslip friction.
     pub contacts: Vec<Contact>,
     /// World totals (counts by regime, forces, dissipated power and energy).
@@ -30,16 +38,31 @@ pub struct StickSlipContacts {
     last: HashMap<(Entity, Entity), Regime>,
 }
 
-impl StickSlipContacts {
-    /// Contacts involving `entity`.
+impl ContactReports {
+    /// Contacts involving the collider `entity`.
     pub fn of(&self, entity: Entity) -> impl Iterator<Item = &Contact> {
-        self.contacts
-            .iter()
-            .filter(move |c| c.collider1 == entity || c.collider2 == entity)
+        self.contacts.iter().filter(move |c| c.involves(entity))
+    }
+
+    /// The most slippery regime among the contacts of the collider `entity` (sliding over
+    /// stick-slip over sticking), or `None` without contacts: e.g. to colour a part.
+    pub fn regime_of(&self, entity: Entity) -> Option<Regime> {
+        self.of(entity)
+            .map(|c| c.report.regime)
+            .max_by_key(|r| rank(*r))
     }
 }
 
-/// A contact changed regime (or appeared in one); read it in `Update` with a `MessageReader`.
+fn rank(r: Regime) -> u8 {
+    match r {
+        Regime::Sticking => 0,
+        Regime::StickSlip => 1,
+        Regime::Sliding => 2,
+    }
+}
+
+/// A contact between two colliders changed regime, or appeared (`from: None`). Written in the
+/// physics schedule; read it in `Update` with a `MessageReader<RegimeChanged>`.
 #[derive(Message, Debug, Clone, Copy, PartialEq)]
 pub struct RegimeChanged {
     /// Entity of the first collider.
@@ -52,10 +75,11 @@ pub struct RegimeChanged {
     pub to: Regime,
 }
 
-/// Maps the modifier's reports to entities and writes `RegimeChanged` messages.
+/// Maps the modifier's reports to entities and writes `RegimeChanged` messages. A pair of
+/// colliders with several manifolds counts as one contact here: its first manifold's regime.
 pub(crate) fn read_back(
     w: Res<StickSlipWorld>,
-    mut out: ResMut<StickSlipContacts>,
+    mut out: ResMut<ContactReports>,
     mut changed: MessageWriter<RegimeChanged>,
 ) {
     let out = &mut *out;
@@ -73,16 +97,18 @@ pub(crate) fn read_back(
             collider2: e2,
             report: *r,
         });
+        if now.contains_key(&(e1, e2)) {
+            continue;
+        }
+        now.insert((e1, e2), r.regime);
         let from = out.last.get(&(e1, e2)).copied();
-        if from != Some(r.regime) && now.insert((e1, e2), r.regime).is_none() {
+        if from != Some(r.regime) {
             changed.write(RegimeChanged {
                 collider1: e1,
                 collider2: e2,
                 from,
                 to: r.regime,
             });
-        } else {
-            now.insert((e1, e2), r.regime);
         }
     }
     out.last = now;

@@ -1,12 +1,15 @@
 //! Debug gizmos: every stickslip contact as a dot coloured by regime (green sticking, orange
-//! stick-slip, red sliding), its friction force as an arrow and its normal as a ray.
+//! stick-slip, red sliding), its friction force as an arrow in the same colour and its normal
+//! as a white ray.
 
-use crate::contacts::StickSlipContacts;
+use crate::contacts::ContactReports;
+use bevy::gizmos::GizmoPlugin;
 use bevy::prelude::*;
 use bevy::transform::TransformSystems;
 use stickslip_core::law::Regime;
 
-/// Gizmo settings of the contact drawing (toggle with `GizmoConfigStore`).
+/// Settings of the contact gizmos. Toggle them with
+/// `GizmoConfigStore::config_mut::<StickSlipGizmos>().0.enabled`.
 #[derive(Reflect, GizmoConfigGroup, Debug, Clone)]
 pub struct StickSlipGizmos {
     /// Metres of arrow per newton of friction force.
@@ -27,7 +30,7 @@ impl Default for StickSlipGizmos {
     }
 }
 
-/// The colour of a regime.
+/// The colour of a regime: green sticking, orange stick-slip, red sliding.
 pub fn regime_color(regime: Regime) -> Color {
     match regime {
         Regime::Sticking => Color::srgb(0.2, 0.85, 0.3),
@@ -36,23 +39,36 @@ pub fn regime_color(regime: Regime) -> Color {
     }
 }
 
-/// Draws the contacts of [`StickSlipContacts`] in `PostUpdate`, after transform propagation.
+/// Draws the contacts of [`ContactReports`] in `PostUpdate`, after transform propagation.
+/// It needs bevy's `GizmoPlugin` (in `DefaultPlugins` with bevy's gizmo features) and does
+/// nothing without it, so the plugin group stays usable headless; it looks in
+/// [`Plugin::finish`], when every plugin is in, so the order of `add_plugins` does not matter.
 pub struct StickSlipDebugPlugin;
 
 impl Plugin for StickSlipDebugPlugin {
-    fn build(&self, app: &mut App) {
+    fn build(&self, _app: &mut App) {}
+
+    fn finish(&self, app: &mut App) {
+        if !app.is_plugin_added::<GizmoPlugin>() {
+            debug!("stickslip contact gizmos off: no GizmoPlugin in this app");
+            return;
+        }
         // Drawn on top: contacts hide under the parts.
         let config = GizmoConfig {
             depth_bias: -1.0,
             ..default()
         };
         app.insert_gizmo_config(StickSlipGizmos::default(), config)
-            .add_systems(PostUpdate, draw_contacts.after(TransformSystems::Propagate));
+            .add_systems(
+                PostUpdate,
+                draw_contacts.after(TransformSystems::Propagate).run_if(
+                    |store: Res<GizmoConfigStore>| store.config::<StickSlipGizmos>().0.enabled,
+                ),
+            );
     }
 }
 
-fn draw_contacts(contacts: Option<Res<StickSlipContacts>>, mut gizmos: Gizmos<StickSlipGizmos>) {
-    let Some(contacts) = contacts else { return };
+fn draw_contacts(contacts: Res<ContactReports>, mut gizmos: Gizmos<StickSlipGizmos>) {
     let cfg = gizmos.config_ext.clone();
     for c in &contacts.contacts {
         let r = &c.report;

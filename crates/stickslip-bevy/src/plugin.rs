@@ -1,29 +1,32 @@
-//! The plugins and their system sets.
+//! The plugins, their group and their system sets.
 
-use crate::contacts::{RegimeChanged, StickSlipContacts, read_back};
-use crate::step::{Gravity, apply_inputs, step_world, writeback};
-use crate::world::*;
+use crate::contacts::{ContactReports, RegimeChanged, read_back};
+use crate::friction::*;
+use crate::removal::*;
+use crate::spawn::{create_objects, sync_changes};
+use crate::step::{Gravity, apply_inputs, step_world};
+use crate::world::StickSlipWorld;
+use crate::writeback::writeback;
 use bevy::app::PluginGroupBuilder;
 use bevy::ecs::schedule::{InternedScheduleLabel, ScheduleLabel};
 use bevy::prelude::*;
 use bevy::transform::TransformSystems;
-use stickslip_core::law::Law;
-use stickslip_core::sliding_curve::Curve;
-use stickslip_rapier::FrictionMaterial;
 
-/// The plugin's systems, chained in this order in its schedule, before transform
-/// propagation.
+/// The plugins' systems, chained in this order in their schedule, before transform
+/// propagation. Order your own systems against them (e.g. drive a kinematic body
+/// `.before(StickSlipSystems::Prepare)`).
 #[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum StickSlipSystems {
-    /// New entities into rapier, friction-layer components, user inputs.
+    /// New entities into rapier, changed components, user inputs (poses, velocities, forces).
     Prepare,
     /// One step of the rapier world with the stickslip modifier.
     Step,
-    /// Poses, velocities and contact reports back onto entities and resources.
+    /// Poses and velocities back onto entities; contact reports and messages.
     Writeback,
 }
 
-/// The rapier bridge: one world, bodies, colliders, velocities, forces, Transform in and out.
+/// The rapier bridge: one world, bodies, colliders, velocities, forces, `Transform` in and
+/// out, cleanup on removal. Alone, it is plain rapier.
 pub struct StickSlipPhysicsPlugin {
     schedule: InternedScheduleLabel,
 }
@@ -43,59 +46,46 @@ impl Default for StickSlipPhysicsPlugin {
     }
 }
 
-/// The material of `FrictionLaw(None)` colliders unless the app inserts its own
-/// [`DefaultFriction`]: elasto-plastic, break-away at μ_ba = 0.5 after g_ba = 5 µm, sliding
-/// at 0.5.
-pub fn default_material() -> FrictionMaterial {
-    let curve = Curve::constant(0.5).expect("a positive coefficient");
-    FrictionMaterial::new(Law::elasto_plastic(1e5, 0.5, 0.5, curve).expect("valid parameters"))
-}
-
 impl Plugin for StickSlipPhysicsPlugin {
     fn build(&self, app: &mut App) {
-        let material = app
-            .world()
-            .get_resource::<DefaultFriction>()
-            .map_or_else(default_material, |d| d.0.clone());
-        app.insert_resource(StickSlipWorld::new(material.clone()))
-            .init_resource::<Gravity>();
-        if !app.world().contains_resource::<DefaultFriction>() {
-            app.insert_resource(DefaultFriction(material));
-        }
-        app.configure_sets(
-            self.schedule,
-            (
-                StickSlipSystems::Prepare,
-                StickSlipSystems::Step,
-                StickSlipSystems::Writeback,
-            )
-                .chain()
-                .before(TransformSystems::Propagate),
-        )
-        .add_systems(
-            self.schedule,
-            (
-                (create_objects, sync_friction, apply_inputs)
+        app.insert_resource(StickSlipWorld::new(default_material()))
+            .init_resource::<Gravity>()
+            .configure_sets(
+                self.schedule,
+                (
+                    StickSlipSystems::Prepare,
+                    StickSlipSystems::Step,
+                    StickSlipSystems::Writeback,
+                )
                     .chain()
-                    .in_set(StickSlipSystems::Prepare),
-                step_world.in_set(StickSlipSystems::Step),
-                writeback.in_set(StickSlipSystems::Writeback),
-            ),
-        )
-        .add_observer(on_remove_body)
-        .add_observer(on_remove_collider)
-        .add_observer(on_remove_force);
+                    .before(TransformSystems::Propagate),
+            )
+            .add_systems(
+                self.schedule,
+                (
+                    (create_objects, sync_changes, apply_inputs)
+                        .chain()
+                        .in_set(StickSlipSystems::Prepare),
+                    step_world.in_set(StickSlipSystems::Step),
+                    writeback.in_set(StickSlipSystems::Writeback),
+                ),
+            )
+            .add_observer(on_remove_body)
+            .add_observer(on_remove_collider)
+            .add_observer(on_remove_force);
     }
 }
 
-/// The friction layer's read-back and removals: `StickSlipContacts`, `RegimeChanged`, and
-/// taking `FrictionLaw`, `Vibration` and `SurfaceVelocity` back out.
+/// The friction layer: [`FrictionLaw`], [`DefaultFriction`], [`Vibration`] and
+/// [`SurfaceVelocity`] on colliders, and the read-back after every step (the
+/// [`ContactReports`] resource, [`RegimeChanged`] messages). Needs [`StickSlipPhysicsPlugin`]
+/// in the same schedule.
 pub struct StickSlipFrictionPlugin {
     schedule: InternedScheduleLabel,
 }
 
 impl StickSlipFrictionPlugin {
-    /// Reads back in `schedule` (the physics plugin's).
+    /// Runs in `schedule` (the physics plugin's).
     pub fn new(schedule: impl ScheduleLabel) -> Self {
         StickSlipFrictionPlugin {
             schedule: schedule.intern(),
@@ -103,20 +93,41 @@ impl StickSlipFrictionPlugin {
     }
 }
 
+impl Default for StickSlipFrictionPlugin {
+    fn default() -> Self {
+        StickSlipFrictionPlugin::new(FixedPostUpdate)
+    }
+}
+
 impl Plugin for StickSlipFrictionPlugin {
     fn build(&self, app: &mut App) {
-        app.init_resource::<StickSlipContacts>()
+        app.init_resource::<DefaultFriction>()
+            .init_resource::<ContactReports>()
             .add_message::<RegimeChanged>()
-            .add_systems(self.schedule, read_back.in_set(StickSlipSystems::Writeback))
+            .add_systems(
+                self.schedule,
+                (
+                    // After creation: new colliders have their handles then.
+                    sync_friction
+                        .after(sync_changes)
+                        .before(apply_inputs)
+                        .in_set(StickSlipSystems::Prepare),
+                    read_back
+                        .after(writeback)
+                        .in_set(StickSlipSystems::Writeback),
+                ),
+            )
             .add_observer(on_remove_friction_law)
             .add_observer(on_remove_vibration)
             .add_observer(on_remove_surface);
     }
 }
 
-/// All of stickslip-bevy: physics bridge, friction layer and (feature `debug`) gizmos.
-/// `StickSlipPlugins::default()` runs in `FixedPostUpdate`; `StickSlipPlugins::new(schedule)`
-/// elsewhere.
+/// All of stickslip-bevy: [`StickSlipPhysicsPlugin`], [`StickSlipFrictionPlugin`] and, with
+/// feature `debug`, `debug::StickSlipDebugPlugin` (which draws
+/// only in apps with bevy's `GizmoPlugin`). `StickSlipPlugins::default()` runs in
+/// `FixedPostUpdate`, `StickSlipPlugins::new(schedule)` elsewhere; `.build().disable::<P>()`
+/// leaves a plugin out.
 pub struct StickSlipPlugins {
     schedule: InternedScheduleLabel,
 }

@@ -1,11 +1,9 @@
-//! The step itself: user inputs into rapier, one step of the world with the stickslip
-//! modifier, poses and velocities back onto the entities.
+//! The step: user inputs into rapier, then one step of the world with the stickslip modifier.
 
 use crate::components::*;
-use crate::convert::{pose_of, rot_to_bevy, to_bevy, to_rapier};
+use crate::convert::{pose_of, to_rapier};
 use crate::world::StickSlipWorld;
 use bevy::prelude::*;
-use rapier3d::prelude as rp;
 
 /// Gravity of the world (m/s², default −9.81 along y).
 #[derive(Resource, Debug, Clone, Copy, PartialEq)]
@@ -17,21 +15,21 @@ impl Default for Gravity {
     }
 }
 
-/// What the user changed since the last writeback goes into rapier: poses of kinematic bodies
-/// and teleports, velocities, external forces.
+/// What the user changed since the last writeback goes into rapier: poses of kinematic
+/// bodies and teleports, velocities, external forces. (The writeback leaves each `Transform`
+/// and `Velocity` equal to rapier's state, so any difference here is the user's.)
 pub(crate) fn apply_inputs(
     mut w: ResMut<StickSlipWorld>,
     bodies: Query<(
-        Entity,
         &RigidBody,
+        &RapierBody,
         &Transform,
         &Velocity,
         Option<&ExternalForce>,
     )>,
 ) {
-    let w = &mut *w;
-    for (entity, kind, transform, velocity, force) in &bodies {
-        let Some(b) = w.body(entity).and_then(|h| w.physics.bodies.get_mut(h)) else {
+    for (kind, h, transform, velocity, force) in &bodies {
+        let Some(b) = w.physics.bodies.get_mut(h.0) else {
             continue;
         };
         let pose = pose_of(transform);
@@ -56,8 +54,8 @@ pub(crate) fn apply_inputs(
     }
 }
 
-/// One rapier step with the stickslip modifier, with the schedule's time step (the fixed
-/// one in fixed schedules). Nothing happens for a zero step (paused virtual time).
+/// One rapier step with the stickslip modifier over the schedule's time step: `Time<Fixed>`'s
+/// in fixed schedules. A zero step (virtual time paused) steps nothing.
 pub(crate) fn step_world(mut w: ResMut<StickSlipWorld>, time: Res<Time>, gravity: Res<Gravity>) {
     let dt = time.delta_secs();
     if dt.is_nan() || dt <= 0.0 {
@@ -67,32 +65,4 @@ pub(crate) fn step_world(mut w: ResMut<StickSlipWorld>, time: Res<Time>, gravity
     w.physics.integration_parameters.dt = dt;
     w.physics.gravity = to_rapier(gravity.0);
     w.friction.step(&mut w.physics);
-}
-
-/// Poses and velocities of moving bodies back onto their entities.
-pub(crate) fn writeback(
-    w: Res<StickSlipWorld>,
-    mut bodies: Query<(Entity, &RigidBody, &mut Transform, &mut Velocity)>,
-) {
-    for (entity, kind, mut transform, mut velocity) in &mut bodies {
-        if matches!(kind, RigidBody::Fixed) {
-            continue;
-        }
-        let Some(b) = w.body(entity).and_then(|h| w.physics.bodies.get(h)) else {
-            continue;
-        };
-        let pose: &rp::Pose = b.position();
-        let (translation, rotation) = (to_bevy(pose.translation), rot_to_bevy(pose.rotation));
-        if transform.translation != translation || transform.rotation != rotation {
-            transform.translation = translation;
-            transform.rotation = rotation;
-        }
-        let v = Velocity {
-            linear: to_bevy(b.linvel()),
-            angular: to_bevy(b.angvel()),
-        };
-        if *velocity != v {
-            *velocity = v;
-        }
-    }
 }

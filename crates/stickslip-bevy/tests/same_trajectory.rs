@@ -6,8 +6,9 @@ mod common;
 use bevy::prelude::*;
 use common::*;
 use rapier3d::prelude as rp;
+use stickslip_bevy::convert::to_rapier;
 use stickslip_bevy::prelude::*;
-use stickslip_bevy::{RapierBody, RapierCollider, SurfaceHooks, to_rapier};
+use stickslip_bevy::{RapierBody, RapierCollider, SurfaceHooks};
 use stickslip_rapier::StickSlip;
 
 #[test]

@@ -4,7 +4,6 @@
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use stickslip_bevy::prelude::*;
-use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 
 /// Physics rate of the tests (Hz).
@@ -68,6 +67,17 @@ pub fn part(app: &mut App, x: f32) -> Entity {
             Transform::from_xyz(x, 0.2, 0.0),
         ))
         .id()
+}
+
+/// Simulated time of the physics (s).
+pub fn sim_time(app: &App) -> f64 {
+    app.world().resource::<StickSlipWorld>().friction.time()
+}
+
+/// Rapier bodies and colliders in the world.
+pub fn rapier_counts(app: &App) -> (usize, usize) {
+    let w = app.world().resource::<StickSlipWorld>();
+    (w.physics.bodies.len(), w.physics.colliders.len())
 }
 
 /// Position and velocity of an entity along x.

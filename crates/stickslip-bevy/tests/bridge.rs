@@ -1,0 +1,194 @@
+//! The rapier bridge moves what it should. Invariants: child colliders make one compound body
+//! with the summed mass that rests where its shapes say; balls and capsules rest on their
+//! radius; a kinematic velocity-based or position-based carrier carries a sticking part
+//! with it; a `SurfaceVelocity` belt brings a part to the belt's speed; `Transform` and
+//! `Velocity` set by the user (teleports, kicks) reach rapier; an `ExternalForce` accelerates
+//! a free body at F/m and stops when removed.
+
+mod common;
+use bevy::prelude::*;
+use common::*;
+use stickslip_bevy::prelude::*;
+
+fn zero_gravity(app: &mut App) {
+    app.insert_resource(Gravity(Vec3::ZERO));
+}
+
+fn pos(app: &App, e: Entity) -> Vec3 {
+    app.world().get::<Transform>(e).unwrap().translation
+}
+
+fn vel(app: &App, e: Entity) -> Vec3 {
+    app.world().get::<Velocity>(e).unwrap().linear
+}
+
+#[test]
+fn child_colliders_make_one_body() {
+    let mut app = app();
+    ground(&mut app, ep(1e5, 0.5, 0.5));
+    // Two 0.2 m cubes side by side (8 kg each) under a collider-less parent.
+    let body = app
+        .world_mut()
+        .spawn((RigidBody::Dynamic, Transform::from_xyz(0.0, 0.25, 0.0)))
+        .with_children(|p| {
+            p.spawn((
+                Collider::cuboid(0.1, 0.1, 0.1),
+                Transform::from_xyz(-0.1, 0.0, 0.0),
+            ));
+            p.spawn((
+                Collider::cuboid(0.1, 0.1, 0.1),
+                Transform::from_xyz(0.1, 0.0, 0.0),
+                Density(2000.0),
+            ));
+        })
+        .id();
+    steps(&mut app, 120);
+    let w = app.world().resource::<StickSlipWorld>();
+    let b = &w.physics.bodies[w.body(body).unwrap()];
+    assert_eq!(b.colliders().len(), 2);
+    assert!((b.mass() - 24.0).abs() < 1e-3, "mass {}", b.mass());
+    // Resting on the ground (top at 0.1): the shapes' bottom at 0.1.
+    let y = pos(&app, body).y;
+    assert!((y - 0.2).abs() < 2e-3, "y = {y}");
+}
+
+#[test]
+fn balls_and_capsules_rest_on_their_radius() {
+    let mut app = app();
+    ground(&mut app, ep(1e5, 0.5, 0.5));
+    let ball = app
+        .world_mut()
+        .spawn((
+            RigidBody::Dynamic,
+            Collider::ball(0.1),
+            Transform::from_xyz(0.0, 0.3, 0.0),
+        ))
+        .id();
+    // A capsule lying along x (half length 0.2 of its cylinder part, radius 0.05).
+    let capsule = app
+        .world_mut()
+        .spawn((
+            RigidBody::Dynamic,
+            Collider::capsule(Vec3::new(-0.2, 0.0, 0.0), Vec3::new(0.2, 0.0, 0.0), 0.05),
+            Transform::from_xyz(1.0, 0.3, 0.0),
+        ))
+        .id();
+    steps(&mut app, 240);
+    assert!(
+        (pos(&app, ball).y - 0.2).abs() < 2e-3,
+        "{}",
+        pos(&app, ball)
+    );
+    assert!(
+        (pos(&app, capsule).y - 0.15).abs() < 2e-3,
+        "{}",
+        pos(&app, capsule)
+    );
+    assert!(vel(&app, ball).length() < 1e-3);
+}
+
+/// A 0.2 m cube on a kinematic platform (EP friction), the platform driven by `drive`.
+fn carried(kind: RigidBody, drive: impl Fn(&mut App, f32)) -> (Vec3, Vec3) {
+    let mut app = app();
+    let platform = app
+        .world_mut()
+        .spawn((
+            kind,
+            Collider::cuboid(2.0, 0.1, 1.0),
+            FrictionLaw::new(ep(1e5, 0.5, 0.5)),
+        ))
+        .id();
+    let box_ = part(&mut app, 0.0);
+    steps(&mut app, 60);
+    let start = pos(&app, box_);
+    for k in 0..120 {
+        drive(&mut app, k as f32 / HZ as f32);
+        steps(&mut app, 1);
+    }
+    let _ = platform;
+    (pos(&app, box_) - start, vel(&app, box_))
+}
+
+#[test]
+fn kinematic_carriers_carry_a_sticking_part() {
+    // Velocity-based: 0.4 m/s for 1 s (accelerating 0.4 m/s in one step would break away;
+    // the platform ramps up over 0.25 s: a ≈ 1.6 m/s² < 0.5 g).
+    let (dx, v) = carried(RigidBody::KinematicVelocityBased, |app, t| {
+        let v = 0.4 * (t / 0.25).min(1.0);
+        let mut q = app
+            .world_mut()
+            .query_filtered::<&mut Velocity, Without<LockRotations>>();
+        for mut vel in q.iter_mut(app.world_mut()) {
+            vel.linear = Vec3::new(v, 0.0, 0.0);
+        }
+    });
+    let expect = 0.4 * (1.0 - 0.125) - 0.4 / 120.0 * 0.5;
+    println!("velocity-based: moved {dx}, v {v}, expected about {expect}");
+    assert!((v.x - 0.4).abs() < 1e-3, "{v}");
+    assert!((dx.x as f64 - expect).abs() < 0.01, "{dx}");
+    // Position-based: x(t) = 0.2 (1 − cos π t), from rest (peak acceleration 2 m/s² < 0.5 g);
+    // at t = 1 s the platform is at 0.4 m and (nearly: its last step moves 0.07 mm) at rest.
+    let (dx, v) = carried(RigidBody::KinematicPositionBased, |app, t| {
+        let x = 0.2 * (1.0 - (std::f32::consts::PI * (t + 1.0 / 120.0)).cos());
+        let mut q = app
+            .world_mut()
+            .query_filtered::<&mut Transform, (With<RigidBody>, Without<LockRotations>)>();
+        for mut tr in q.iter_mut(app.world_mut()) {
+            tr.translation.x = x;
+        }
+    });
+    println!("position-based: moved {dx}, v {v}, platform moved 0.4 m");
+    assert!((dx.x - 0.4).abs() < 1e-3, "{dx}");
+    assert!(v.x.abs() < 0.02, "{v}");
+}
+
+#[test]
+fn a_belt_brings_a_part_to_its_speed() {
+    let mut app = app();
+    let belt = ground(&mut app, ep(1e5, 0.5, 0.5));
+    app.world_mut()
+        .entity_mut(belt)
+        .insert(SurfaceVelocity(Vec3::new(0.3, 0.0, 0.0)));
+    let p = part(&mut app, 0.0);
+    steps(&mut app, 120);
+    let v = vel(&app, p);
+    println!("part on the belt: {v}");
+    assert!((v.x - 0.3).abs() < 1e-3 && v.z.abs() < 1e-4, "{v}");
+    // Stopping the belt stops the part (μ g = 4.9 m/s²: within 0.1 s).
+    app.world_mut().entity_mut(belt).remove::<SurfaceVelocity>();
+    steps(&mut app, 30);
+    assert!(vel(&app, p).length() < 1e-3, "{}", vel(&app, p));
+}
+
+#[test]
+fn user_inputs_reach_rapier() {
+    let mut app = app();
+    zero_gravity(&mut app);
+    let b = app
+        .world_mut()
+        .spawn((
+            RigidBody::Dynamic,
+            Collider::cuboid(0.1, 0.1, 0.1),
+            LockRotations,
+        ))
+        .id();
+    steps(&mut app, 1);
+    // Teleport.
+    app.world_mut().get_mut::<Transform>(b).unwrap().translation = Vec3::new(5.0, 1.0, 0.0);
+    steps(&mut app, 1);
+    assert_eq!(pos(&app, b), Vec3::new(5.0, 1.0, 0.0));
+    // Kick: 1.2 m/s for 1 s.
+    app.world_mut().get_mut::<Velocity>(b).unwrap().linear = Vec3::new(1.2, 0.0, 0.0);
+    steps(&mut app, 120);
+    assert!((pos(&app, b).x - 6.2).abs() < 1e-3, "{}", pos(&app, b));
+    // A force of 8 N on 8 kg: +1 m/s in 1 s, then nothing once removed.
+    app.world_mut().entity_mut(b).insert(ExternalForce {
+        force: Vec3::new(8.0, 0.0, 0.0),
+        torque: Vec3::ZERO,
+    });
+    steps(&mut app, 120);
+    assert!((vel(&app, b).x - 2.2).abs() < 1e-3, "{}", vel(&app, b));
+    app.world_mut().entity_mut(b).remove::<ExternalForce>();
+    steps(&mut app, 60);
+    assert!((vel(&app, b).x - 2.2).abs() < 1e-3, "{}", vel(&app, b));
+}
