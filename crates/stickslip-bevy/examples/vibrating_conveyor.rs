@@ -5,7 +5,7 @@
 //! 2. the same trough with Popov's normal vibration of its base (α = 0.6, 20 kHz, averaged):
 //!    static friction drops to 0.2 < 0.3, the parts flow, and the HUD shows their speed beside
 //!    the theory's conveying speed (μ_k (1 − α Ψ(β)) = 0.3);
-//! 3. a classic vibratory feeder: a horizontal trough vibrating 3 mm at 15 Hz along a 30°
+//! 3. a classic vibratory feeder: a horizontal trough vibrating 3 mm at 15 Hz along a 30 deg
 //!    throw angle (throw number 1.36), so that the parts hop forward.
 //!
 //! Parts are coloured by the regime of their contacts (green sticking, orange stick-slip, red
@@ -16,7 +16,7 @@
 //! cargo run --release -p stickslip-bevy --features window --example vibrating_conveyor
 //! # no display: under Xvfb, save the window after 120 frames and exit
 //! xvfb-run -a -s "-screen 0 1280x720x24" cargo run -p stickslip-bevy --features window \
-//!     --example vibrating_conveyor -- --screenshot conveyor.png --frames 120
+//!     --example vibrating_conveyor -- --screenshot conveyor.png --frames 60
 //! ```
 
 use bevy::diagnostic::FrameCount;
@@ -169,7 +169,7 @@ fn setup(
     ));
     commands.spawn((
         DirectionalLight {
-            shadows_enabled: true,
+            shadow_maps_enabled: true,
             ..default()
         },
         Transform::from_xyz(2.0, 5.0, 3.0).looking_at(Vec3::ZERO, Vec3::Y),
@@ -368,20 +368,19 @@ fn colour_parts(
 fn hud(
     contacts: Res<ContactReports>,
     time: Res<Time<Virtual>>,
-    parts: Query<(&Part, &Velocity, &Transform)>,
+    parts: Query<(&Part, &Velocity)>,
     shaker: Query<Has<Vibration>, With<ShakerBase>>,
     mut text: Query<&mut Text, With<Hud>>,
 ) {
     let mut speed = [0.0f32; 3];
     let mut count = [0usize; 3];
-    for (part, v, t) in &parts {
+    for (part, v) in &parts {
         // Speed along each lane's downhill / forward direction.
         let along = if part.0 < 2 {
             Quat::from_rotation_z(-SLOPE.atan()) * Vec3::X
         } else {
             Vec3::X
         };
-        let _ = t;
         speed[part.0] += v.linear.dot(along);
         count[part.0] += 1;
     }
@@ -398,7 +397,7 @@ fn hud(
          t = {:.2} s{}{}\n\
          lane 1  inclined trough, no vibration    mean speed {:+.4} m/s (EP holds: 0)\n\
          lane 2  same trough, Popov vibration {}  mean speed {:+.4} m/s (theory {:.4} m/s)\n\
-         lane 3  vibratory feeder 3 mm, 15 Hz, 30°    mean speed {:+.4} m/s\n\
+         lane 3  vibratory feeder 3 mm, 15 Hz, throw 30 deg  mean speed {:+.4} m/s\n\
          contacts: {} sticking, {} stick-slip, {} sliding; dissipated {:.2} W\n\
          V vibration  Space pause  S slow motion  R reset  G gizmos",
         contacts.time,
@@ -408,8 +407,8 @@ fn hud(
         } else {
             ""
         },
-        if vib { "ON " } else { "OFF" },
         speed[0],
+        if vib { "ON " } else { "OFF" },
         speed[1],
         theory_speed(),
         speed[2],
@@ -420,11 +419,17 @@ fn hud(
     );
 }
 
-/// `--screenshot PATH --frames N`: save the window at frame N and exit (CI and docs).
+/// Frame after which the app exits once the screenshot is taken.
+#[derive(Resource, Default)]
+struct ExitAt(Option<u32>);
+
+/// `--screenshot PATH --frames N`: save the window at frame N and exit (CI and docs). The
+/// PNG is written on an I/O task: exit a few frames later so that it is complete.
 fn shot_and_exit(
     mut commands: Commands,
     frames: Res<FrameCount>,
     options: Res<Options>,
+    exit_at: Option<Res<ExitAt>>,
     mut exit: MessageWriter<AppExit>,
 ) {
     let Some((path, n)) = &options.screenshot else {
@@ -433,11 +438,18 @@ fn shot_and_exit(
     if frames.0 == *n {
         let path = path.clone();
         commands.spawn(Screenshot::primary_window()).observe(
-            move |captured: On<ScreenshotCaptured>, mut exit: MessageWriter<AppExit>| {
+            move |captured: On<ScreenshotCaptured>,
+                  frames: Res<FrameCount>,
+                  mut commands: Commands| {
                 save_to_disk(path.clone())(captured);
-                exit.write(AppExit::Success);
+                commands.insert_resource(ExitAt(Some(frames.0 + 10)));
             },
         );
+    }
+    if let Some(at) = exit_at.and_then(|e| e.0)
+        && frames.0 >= at
+    {
+        exit.write(AppExit::Success);
     }
     // A screenshot that never arrives must not hang a CI run.
     if frames.0 > *n + 600 {

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# The bevy example `vibrating_conveyor` in a real window under Xvfb (software Vulkan): renders
+# FRAMES frames, saves the window to OUT and checks that the picture is not blank.
+#   bash scripts/bevy_screenshot.sh [OUT] [FRAMES]
+# Installs what it needs from Debian's packages (xvfb, Mesa's Vulkan driver) when missing.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$HOME/.cache/stickslip-target}"
+OUT="${1:-$CARGO_TARGET_DIR/vibrating_conveyor.png}"
+FRAMES="${2:-60}"
+
+if ! command -v xvfb-run >/dev/null || [ ! -e /usr/share/vulkan/icd.d/lvp_icd.x86_64.json ]; then
+    apt-get update -qq
+    apt-get install -y -qq xvfb xauth mesa-vulkan-drivers libvulkan1 libx11-6 libxcursor1 \
+        libxrandr2 libxi6 libxkbcommon-x11-0 >/dev/null
+fi
+
+cargo build -p stickslip-bevy --features window --example vibrating_conveyor
+export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
+chmod 700 "$XDG_RUNTIME_DIR"
+rm -f "$OUT"
+timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
+    "$CARGO_TARGET_DIR/debug/examples/vibrating_conveyor" --screenshot "$OUT" --frames "$FRAMES"
+
+# Not blank: a PNG whose pixels vary (decoded with the standard library only).
+python3 - "$OUT" <<'PY'
+import struct, sys, zlib
+data = open(sys.argv[1], "rb").read()
+assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+pos, idat, width, height = 8, b"", 0, 0
+while pos < len(data):
+    n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+    body = data[pos + 8:pos + 8 + n]
+    if kind == b"IHDR":
+        width, height = struct.unpack(">II", body[:8])
+    elif kind == b"IDAT":
+        idat += body
+    pos += 12 + n
+raw = zlib.decompress(idat)
+row = len(raw) // height
+# Unfiltered byte values of a sample of rows (filter type byte skipped): spread of colours.
+values = [b for y in range(0, height, max(1, height // 64)) for b in raw[y * row + 1:(y + 1) * row:97]]
+distinct = len(set(values))
+print(f"{sys.argv[1]}: {width}x{height}, {distinct} distinct sampled byte values")
+assert width >= 640 and height >= 360, "window too small"
+assert distinct > 16, "the screenshot looks blank"
+PY
