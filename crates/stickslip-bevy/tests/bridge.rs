@@ -3,7 +3,8 @@
 //! radius; a kinematic velocity-based or position-based carrier carries a sticking part
 //! with it; a `SurfaceVelocity` belt brings a part to the belt's speed; `Transform` and
 //! `Velocity` set by the user (teleports, kicks) reach rapier; an `ExternalForce` accelerates
-//! a free body at F/m and stops when removed.
+//! a free body at F/m and stops when removed; a body added to an entity with a (so far
+//! fixed) collider takes the collider over.
 
 mod common;
 use bevy::prelude::*;
@@ -191,4 +192,29 @@ fn user_inputs_reach_rapier() {
     app.world_mut().entity_mut(b).remove::<ExternalForce>();
     steps(&mut app, 60);
     assert!((vel(&app, b).x - 2.2).abs() < 1e-3, "{}", vel(&app, b));
+}
+
+#[test]
+fn a_body_added_later_takes_over_its_colliders() {
+    let mut app = app();
+    ground(&mut app, ep(1e5, 0.5, 0.5));
+    // A collider alone is fixed: it floats.
+    let e = app
+        .world_mut()
+        .spawn((
+            Collider::cuboid(0.1, 0.1, 0.1),
+            Transform::from_xyz(0.0, 1.0, 0.0),
+        ))
+        .id();
+    steps(&mut app, 30);
+    assert_eq!(pos(&app, e).y, 1.0);
+    assert_eq!(rapier_counts(&app), (1, 2));
+    // With a body it falls onto the ground, one body, one collider on it.
+    app.world_mut().entity_mut(e).insert(RigidBody::Dynamic);
+    steps(&mut app, 120);
+    assert_eq!(rapier_counts(&app), (2, 2));
+    let w = app.world().resource::<StickSlipWorld>();
+    let c = &w.physics.colliders[w.collider(e).unwrap()];
+    assert_eq!(c.parent(), w.body(e));
+    assert!((pos(&app, e).y - 0.2).abs() < 2e-3, "{}", pos(&app, e));
 }

@@ -1,6 +1,8 @@
 //! The plugin adds nothing to the physics: a box pushed across an elasto-plastic ground,
 //! stepped through the bevy plugin and directly through stickslip-rapier (same objects in the
-//! same handle order, same step), follows the same trajectory bit for bit.
+//! same handle order, same step), follows the same trajectory bit for bit: the plugin only
+//! copies values between the ECS and rapier (glam conversions by value are exact) and steps
+//! with `StickSlip::step`, so nothing may differ.
 
 mod common;
 use bevy::prelude::*;
@@ -39,12 +41,14 @@ fn plugin_and_direct_rapier_agree_bit_for_bit() {
     let mut bodies = [(ground_body, true), (part_body, false)];
     bodies.sort_by_key(|(h, _)| h.0.into_raw_parts().0);
     for (h, fixed) in bodies {
+        // As the plugin builds them: bodies never sleep unless `AllowSleep` says so.
         let builder = if fixed {
-            rp::RigidBodyBuilder::fixed()
+            rp::RigidBodyBuilder::fixed().can_sleep(false)
         } else {
             rp::RigidBodyBuilder::dynamic()
                 .translation(rp::Vector::new(0.0, 0.2, 0.0))
                 .lock_rotations()
+                .can_sleep(false)
         };
         assert_eq!(world.insert_body(builder), h);
     }
