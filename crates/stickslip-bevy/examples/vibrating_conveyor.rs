@@ -1,161 +1,270 @@
-//! Three lanes side by side, same parts, same start, in a real window:
+//! Vibration moves parts that friction holds: three lanes side by side in a real window, the
+//! same five parts on each, the same start.
 //!
-//! 1. an inclined trough (slope 0.3) with elasto-plastic friction (μ_ba = 0.5): the parts stay
-//!    put, the law holds them without creep;
-//! 2. the same trough with Popov's normal vibration of its base (α = 0.6, 20 kHz, averaged):
-//!    static friction drops to 0.2 < 0.3, the parts flow, and the HUD shows their speed beside
-//!    the theory's conveying speed (μ_k (1 − α Ψ(β)) = 0.3);
-//! 3. a classic vibratory feeder: a horizontal trough vibrating 3 mm at 15 Hz along a 30 deg
-//!    throw angle (throw number 1.36), so that the parts hop forward.
+//! 1. **Inclined trough, no vibration.** Slope tan θ = 0.3 under elasto-plastic friction
+//!    (μ0 = 0.5 for break-away and sliding, c = 2e4 1/m): the law holds the parts, without
+//!    creep (at most g_ba = μ0/c = 25 µm).
+//! 2. **The same trough with Popov's normal vibration** of its base (α = 0.6, 20 kHz,
+//!    averaged): the static coefficient drops to μ0 (1 − α) = 0.2 < 0.3 and the parts flow.
+//!    They settle where the mean sliding friction μ0 (1 − α Ψ(β)) equals the slope; the HUD
+//!    shows their measured transport speed beside that speed of the theory.
+//! 3. **A classic vibratory feeder**: a horizontal kinematic trough vibrating 3 mm at 15 Hz
+//!    along a 30° throw angle (throw number Γ = 1.36 > 1): the parts hop forward. The HUD
+//!    shows the point-mass reference of `stickslip_core::feeder` beside the measured speed.
 //!
 //! Parts are coloured by the regime of their contacts (green sticking, orange stick-slip, red
-//! sliding); contact gizmos show friction forces and normals. Keys: V vibration of lane 2 on
-//! or off, Space pause, S slow motion, R reset, G gizmos.
+//! sliding, white in flight); the contact gizmos show each contact's friction force (arrow in
+//! the regime's colour) and normal (white). Parts that reach the end of a lane start over.
+//!
+//! Keys: V vibration on/off (lanes 2 and 3), Space pause, S slow motion (×0.1), R reset,
+//! G contact gizmos.
 //!
 //! ```sh
 //! cargo run --release -p stickslip-bevy --features window --example vibrating_conveyor
-//! # no display: under Xvfb, save the window after 120 frames and exit
+//! # No display: under Xvfb (software Vulkan), render 120 frames of 1/30 s simulated time
+//! # each, save the window and exit.
 //! xvfb-run -a -s "-screen 0 1280x720x24" cargo run -p stickslip-bevy --features window \
-//!     --example vibrating_conveyor -- --screenshot conveyor.png --frames 60
+//!     --example vibrating_conveyor -- --screenshot conveyor.png --frames 120
 //! ```
 
 use bevy::diagnostic::FrameCount;
 use bevy::prelude::*;
 use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured, save_to_disk};
+use bevy::time::TimeUpdateStrategy;
+use std::collections::VecDeque;
+use std::f32::consts::FRAC_PI_6;
+use std::time::Duration;
 use stickslip_bevy::debug::{StickSlipGizmos, regime_color};
 use stickslip_bevy::prelude::*;
-use stickslip_core::law::{Law, Regime};
+use stickslip_core::feeder::VibratoryFeeder;
 use stickslip_core::popov;
 use stickslip_core::sliding_curve::Curve;
-use stickslip_core::waveform::Waveform;
 
-const SLOPE: f32 = 0.3;
-const MU_BA: f64 = 0.5;
-const MU_K: f64 = 0.52;
-const C: f64 = 1e5;
+/// Slope tan θ of lanes 1 and 2.
+const SLOPE: f64 = 0.3;
+/// Friction coefficient μ0 (break-away and sliding).
+const MU0: f64 = 0.5;
+/// Law stiffness c (1/m).
+const C: f64 = 2e4;
+/// Popov vibration of lane 2: amplitude ratio α, frequency (Hz).
 const ALPHA: f64 = 0.6;
-const F_VIB: f64 = 20_000.0;
-/// Vibratory feeder: amplitude (m), frequency (Hz), throw angle (rad).
-const FEEDER: (f32, f32, f32) = (0.003, 15.0, std::f32::consts::FRAC_PI_6);
-/// Lane positions along z.
-const LANES: [f32; 3] = [-1.2, 0.0, 1.2];
+const F_POPOV: f64 = 20_000.0;
+/// Vibratory feeder of lane 3: amplitude (m), frequency (Hz), throw angle (rad).
+const FEEDER: (f32, f32, f32) = (0.003, 15.0, FRAC_PI_6);
+/// Physics rate (Hz): 200 steps per feeder period.
+const PHYSICS_HZ: f64 = 3000.0;
+/// Lane centres along z, and the lanes' length (m) and the parts' start and restart
+/// positions along them.
+const LANES: [f32; 3] = [-1.0, 0.0, 1.0];
+const LENGTH: f32 = 3.0;
+const START: f32 = -1.3;
+const END: f32 = 1.3;
+/// Parts per lane and their spacing along the lane (m).
+const PARTS: usize = 5;
+const SPACING: f32 = 0.2;
+/// Half extent of a part (m).
+const HALF: f32 = 0.04;
+/// Window of the measured transport speed (s of simulated time).
+const SPEED_WINDOW: f64 = 1.0;
 
-#[derive(Resource)]
-struct Options {
-    screenshot: Option<(String, u32)>,
+fn main() -> AppExit {
+    let options = match Options::parse(std::env::args().skip(1)) {
+        Ok(o) => o,
+        Err(e) => {
+            eprintln!("{e}\nusage: vibrating_conveyor [--screenshot PATH] [--frames N]");
+            return AppExit::error();
+        }
+    };
+    if std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none() {
+        eprintln!(
+            "no display: run this example on a desktop, or under Xvfb: \
+             xvfb-run -a -s \"-screen 0 1280x720x24\" <binary> --screenshot out.png"
+        );
+        return AppExit::error();
+    }
+    let mut app = App::new();
+    app.add_plugins(DefaultPlugins.set(WindowPlugin {
+        primary_window: Some(Window {
+            title: "stickslip: vibrating conveyor".into(),
+            resolution: (1280, 720).into(),
+            ..default()
+        }),
+        ..default()
+    }))
+    .add_plugins(StickSlipPlugins::default())
+    .insert_resource(Time::<Fixed>::from_hz(PHYSICS_HZ))
+    .insert_resource(ClearColor(Color::srgb(0.09, 0.1, 0.12)))
+    .insert_resource(Theory::compute())
+    .init_resource::<Speeds>()
+    .add_systems(Startup, (setup, spawn_parts).chain())
+    .add_systems(
+        FixedPostUpdate,
+        (
+            drive_feeder.before(StickSlipSystems::Prepare),
+            (measure_speeds, restart_parts).after(StickSlipSystems::Writeback),
+        ),
+    )
+    .add_systems(
+        Update,
+        (keys, colour_parts, hud, place_labels, vibration_cue),
+    );
+    if let Some(shot) = options.screenshot {
+        // Reproducible pictures: every frame advances 1/30 s, however slow the renderer.
+        app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f64(
+            1.0 / 30.0,
+        )))
+        .insert_resource(shot)
+        .add_systems(Last, shot_and_exit);
+    }
+    app.run()
 }
 
+/// Command line: `--screenshot PATH --frames N`.
+struct Options {
+    screenshot: Option<ShotAt>,
+}
+
+/// Where and when to save the window.
+#[derive(Resource, Clone)]
+struct ShotAt {
+    path: String,
+    frame: u32,
+}
+
+impl Options {
+    fn parse(mut args: impl Iterator<Item = String>) -> Result<Options, String> {
+        let (mut path, mut frames) = (None, 120u32);
+        while let Some(arg) = args.next() {
+            match arg.as_str() {
+                "--screenshot" => path = Some(args.next().ok_or("--screenshot needs a path")?),
+                "--frames" => {
+                    let n = args.next().ok_or("--frames needs a number")?;
+                    frames = n
+                        .parse()
+                        .map_err(|_| format!("--frames: not a number: {n}"))?;
+                }
+                other => return Err(format!("unknown argument {other}")),
+            }
+        }
+        Ok(Options {
+            screenshot: path.map(|path| ShotAt {
+                path,
+                frame: frames.max(1),
+            }),
+        })
+    }
+}
+
+/// What the theories say the lanes do.
+#[derive(Resource)]
+struct Theory {
+    /// Popov's conveying speed of lane 2 (m/s).
+    popov: f64,
+    /// The point-mass reference speed of lane 3 (m/s) and its throw number.
+    feeder: f64,
+    throw_number: f64,
+}
+
+impl Theory {
+    fn compute() -> Theory {
+        // μ0 (1 − α Ψ(β*)) = tan θ, β* = c v*/(μ0 α f).
+        let target = (1.0 - SLOPE / MU0) / ALPHA;
+        let g = |beta: f64| popov::psi(&Waveform::Sine, beta).unwrap_or(f64::NAN) - target;
+        let mut conv = roots::SimpleConvergency {
+            eps: 1e-12,
+            max_iter: 200,
+        };
+        let beta = roots::find_root_brent(1e-6, 100.0, g, &mut conv).unwrap_or(f64::NAN);
+        let (a, f, throw) = FEEDER;
+        let feeder = VibratoryFeeder::new(a as f64, f as f64, throw as f64, MU0, 9.81)
+            .expect("valid feeder");
+        Theory {
+            popov: beta * MU0 * ALPHA * F_POPOV / C,
+            feeder: feeder.transport_speed(20, 20),
+            throw_number: feeder.throw_number(),
+        }
+    }
+}
+
+/// A part, on lane 0, 1 or 2.
 #[derive(Component)]
 struct Part(usize);
 
+/// The base of lane 2 (carries the Popov vibration).
 #[derive(Component)]
-struct ShakerBase;
+struct PopovBase;
 
+/// The kinematic trough of lane 3, vibrating about `rest` while `on`.
 #[derive(Component)]
 struct FeederTrough {
-    base: Vec3,
+    rest: Vec3,
+    on: bool,
 }
+
+/// Lane `i`'s label, placed over the lane on screen.
+#[derive(Component)]
+struct LaneLabel(usize);
 
 #[derive(Component)]
 struct Hud;
 
+/// Materials and meshes shared by the parts.
 #[derive(Resource)]
 struct Palette {
-    idle: Handle<StandardMaterial>,
+    airborne: Handle<StandardMaterial>,
     regimes: [Handle<StandardMaterial>; 3],
-    part_mesh: Handle<Mesh>,
+    part: Handle<Mesh>,
 }
 
-fn main() -> AppExit {
-    let mut screenshot = None;
-    let args: Vec<String> = std::env::args().collect();
-    let mut frames = 120u32;
-    let mut path = None;
-    let mut i = 1;
-    while i < args.len() {
-        match args[i].as_str() {
-            "--screenshot" if i + 1 < args.len() => {
-                path = Some(args[i + 1].clone());
-                i += 1;
-            }
-            "--frames" if i + 1 < args.len() => {
-                frames = match args[i + 1].parse() {
-                    Ok(n) => n,
-                    Err(_) => {
-                        eprintln!("--frames needs a number, got {}", args[i + 1]);
-                        return AppExit::error();
-                    }
-                };
-                i += 1;
-            }
-            other => {
-                eprintln!("unknown argument {other}; usage: [--screenshot PATH] [--frames N]");
-                return AppExit::error();
-            }
-        }
-        i += 1;
+/// The lanes' mean speed along their direction, per physics step, over the last second.
+#[derive(Resource, Default)]
+struct Speeds {
+    samples: [VecDeque<(f64, f32)>; 3],
+}
+
+impl Speeds {
+    /// Time-averaged mean speed of lane `i` (m/s): the displacement rate even for hopping
+    /// parts and across restarts.
+    fn mean(&self, i: usize) -> f32 {
+        let s = &self.samples[i];
+        s.iter().map(|(_, v)| v).sum::<f32>() / s.len().max(1) as f32
     }
-    if let Some(p) = path {
-        screenshot = Some((p, frames));
+}
+
+/// Downhill (lanes 1, 2) or forward (lane 3) direction, and the lane's pose.
+fn lane_frame(lane: usize) -> (Vec3, Quat, Vec3) {
+    let z = LANES[lane];
+    if lane < 2 {
+        let tilt = Quat::from_rotation_z(-(SLOPE as f32).atan());
+        (tilt * Vec3::X, tilt, Vec3::new(0.0, 0.0, z))
+    } else {
+        (Vec3::X, Quat::IDENTITY, Vec3::new(0.0, -0.75, z))
     }
-    if std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none() {
-        eprintln!("no display: run under a desktop or `xvfb-run -a` (see the example's header)");
-        return AppExit::error();
-    }
-    App::new()
-        .add_plugins(DefaultPlugins.set(WindowPlugin {
-            primary_window: Some(Window {
-                title: "stickslip: vibrating conveyor".into(),
-                resolution: (1280, 720).into(),
-                ..default()
-            }),
-            ..default()
-        }))
-        .add_plugins(StickSlipPlugins::default())
-        .insert_resource(Time::<Fixed>::from_hz(600.0))
-        .insert_resource(Options { screenshot })
-        .add_systems(Startup, setup)
-        .add_systems(
-            FixedPostUpdate,
-            drive_feeder.before(StickSlipSystems::Prepare),
-        )
-        .add_systems(Update, (keys, colour_parts, hud, shot_and_exit))
-        .run()
+}
+
+/// A point at `along` metres on lane `lane`, `up` metres above its surface.
+fn on_lane(lane: usize, along: f32, up: f32) -> Vec3 {
+    let (_, rotation, centre) = lane_frame(lane);
+    centre + rotation * Vec3::new(along, 0.05 + up, 0.0)
 }
 
 fn ep_material() -> FrictionMaterial {
-    let curve = Curve::constant(MU_K).expect("positive");
-    FrictionMaterial::new(Law::elasto_plastic(C, MU_BA, MU_K, curve).expect("valid"))
+    let curve = Curve::constant(MU0).expect("positive");
+    FrictionMaterial::new(Law::elasto_plastic(C, MU0, MU0, curve).expect("valid law"))
 }
 
-fn vibration() -> Vibration {
+fn popov_vibration() -> Vibration {
     Vibration(
         VibrationSource::new(
             VibrationDirection::Normal,
             Amplitude::Ratio(ALPHA),
-            F_VIB,
+            F_POPOV,
             Waveform::Sine,
             0.0,
             VibrationMode::Averaged,
         )
         .expect("valid source"),
     )
-}
-
-/// The conveying speed of Popov's theory on lane 2: μ_k (1 − α Ψ(β)) = slope.
-fn theory_speed() -> f64 {
-    let target = (1.0 - SLOPE as f64 / MU_K) / ALPHA;
-    let (mut lo, mut hi) = (1e-6, 100.0);
-    // Ψ falls with β: bisection.
-    for _ in 0..100 {
-        let mid = (lo * hi as f64).sqrt();
-        if popov::psi(&Waveform::Sine, mid).unwrap_or(0.0) > target {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    lo * MU_K * ALPHA * F_VIB / C
 }
 
 fn setup(
@@ -165,91 +274,99 @@ fn setup(
 ) {
     commands.spawn((
         Camera3d::default(),
-        Transform::from_xyz(-0.6, 2.2, 4.2).looking_at(Vec3::new(0.2, -0.2, 0.0), Vec3::Y),
+        Transform::from_xyz(0.6, 1.9, 3.6).looking_at(Vec3::new(0.0, -0.35, 0.0), Vec3::Y),
     ));
     commands.spawn((
         DirectionalLight {
+            illuminance: 8000.0,
             shadow_maps_enabled: true,
             ..default()
         },
-        Transform::from_xyz(2.0, 5.0, 3.0).looking_at(Vec3::ZERO, Vec3::Y),
+        Transform::from_xyz(-2.0, 6.0, 3.0).looking_at(Vec3::ZERO, Vec3::Y),
     ));
-    let trough_mat = materials.add(Color::srgb(0.35, 0.38, 0.45));
-    let shaker_mat = materials.add(Color::srgb(0.3, 0.45, 0.7));
-    let palette = Palette {
-        idle: materials.add(Color::srgb(0.7, 0.7, 0.7)),
-        regimes: [
-            materials.add(regime_color(Regime::Sticking)),
-            materials.add(regime_color(Regime::StickSlip)),
-            materials.add(regime_color(Regime::Sliding)),
-        ],
-        part_mesh: meshes.add(Cuboid::new(0.1, 0.1, 0.1)),
+    let metal = materials.add(StandardMaterial {
+        base_color: Color::srgb(0.45, 0.48, 0.55),
+        perceptual_roughness: 0.6,
+        ..default()
+    });
+    let shaker = materials.add(StandardMaterial {
+        base_color: Color::srgb(0.3, 0.5, 0.85),
+        perceptual_roughness: 0.5,
+        ..default()
+    });
+    let mut flat = |c: Color| {
+        materials.add(StandardMaterial {
+            base_color: c,
+            perceptual_roughness: 0.8,
+            ..default()
+        })
     };
-    let base_mesh = meshes.add(Cuboid::new(3.0, 0.1, 0.6));
-    let wall_mesh = meshes.add(Cuboid::new(3.0, 0.2, 0.04));
-    let tilt = Quat::from_rotation_z(-SLOPE.atan());
-    for (lane, z) in LANES.iter().enumerate() {
-        let (rotation, center) = if lane < 2 {
-            (tilt, Vec3::new(0.0, 0.0, *z))
-        } else {
-            (Quat::IDENTITY, Vec3::new(0.0, -0.5, *z))
-        };
+    commands.insert_resource(Palette {
+        airborne: flat(Color::WHITE),
+        regimes: [
+            flat(regime_color(Regime::Sticking)),
+            flat(regime_color(Regime::StickSlip)),
+            flat(regime_color(Regime::Sliding)),
+        ],
+        part: meshes.add(Cuboid::from_length(2.0 * HALF)),
+    });
+    let base_mesh = meshes.add(Cuboid::new(LENGTH, 0.1, 0.5));
+    let wall_mesh = meshes.add(Cuboid::new(LENGTH, 0.12, 0.02));
+    for lane in 0..3 {
+        let (_, rotation, centre) = lane_frame(lane);
         let mut base = commands.spawn((
             Mesh3d(base_mesh.clone()),
-            MeshMaterial3d(if lane == 1 {
-                shaker_mat.clone()
+            MeshMaterial3d(if lane == 0 {
+                metal.clone()
             } else {
-                trough_mat.clone()
+                shaker.clone()
             }),
-            Collider::cuboid(1.5, 0.05, 0.3),
+            Collider::cuboid(LENGTH / 2.0, 0.05, 0.25),
             FrictionLaw::new(ep_material()),
-            Transform::from_translation(center).with_rotation(rotation),
+            Transform::from_translation(centre).with_rotation(rotation),
         ));
-        if lane == 2 {
-            base.insert((
+        match lane {
+            0 => base.insert(RigidBody::Fixed),
+            1 => base.insert((RigidBody::Fixed, PopovBase, popov_vibration())),
+            _ => base.insert((
                 RigidBody::KinematicPositionBased,
-                FeederTrough { base: center },
-            ));
-        } else {
-            base.insert(RigidBody::Fixed);
-        }
-        if lane == 1 {
-            base.insert((vibration(), ShakerBase));
-        }
+                FeederTrough {
+                    rest: centre,
+                    on: true,
+                },
+            )),
+        };
         let trough = base.id();
-        // Side walls and an end stop as children (plain rapier friction).
-        for (offset, mesh, half) in [
-            (
-                Vec3::new(0.0, 0.1, 0.32),
-                wall_mesh.clone(),
-                Vec3::new(1.5, 0.1, 0.02),
-            ),
-            (
-                Vec3::new(0.0, 0.1, -0.32),
-                wall_mesh.clone(),
-                Vec3::new(1.5, 0.1, 0.02),
-            ),
-        ] {
+        // Side walls as children: part of the trough's body, plain rapier friction (low).
+        for side in [-1.0, 1.0] {
             commands.spawn((
-                Mesh3d(mesh),
-                MeshMaterial3d(trough_mat.clone()),
-                Collider::cuboid(half.x, half.y, half.z),
-                Friction(0.1),
-                Transform::from_translation(offset),
+                Mesh3d(wall_mesh.clone()),
+                MeshMaterial3d(metal.clone()),
+                Collider::cuboid(LENGTH / 2.0, 0.06, 0.01),
+                Friction(0.05),
+                Transform::from_xyz(0.0, 0.11, side * 0.26),
                 ChildOf(trough),
             ));
         }
+        let title = [
+            "1  no vibration: held",
+            "2  Popov normal vibration",
+            "3  vibratory feeder",
+        ][lane];
         commands.spawn((
-            Mesh3d(meshes.add(Cuboid::new(0.04, 0.2, 0.6))),
-            MeshMaterial3d(trough_mat.clone()),
-            Collider::cuboid(0.02, 0.1, 0.3),
-            Friction(0.1),
-            Transform::from_xyz(1.45, 0.1, 0.0),
-            ChildOf(trough),
+            LaneLabel(lane),
+            Text::new(title),
+            TextFont {
+                font_size: FontSize::Px(17.0),
+                ..default()
+            },
+            TextColor(Color::srgb(0.9, 0.92, 0.95)),
+            Node {
+                position_type: PositionType::Absolute,
+                ..default()
+            },
         ));
     }
-    commands.insert_resource(palette);
-    commands.run_system_cached(spawn_parts);
     commands.spawn((
         Hud,
         Text::new(""),
@@ -260,45 +377,72 @@ fn setup(
         Node {
             position_type: PositionType::Absolute,
             top: px(10),
-            left: px(10),
+            left: px(12),
             ..default()
         },
     ));
 }
 
+/// Five parts per lane at the lanes' upper (or rear) end, at rest.
 fn spawn_parts(mut commands: Commands, palette: Res<Palette>) {
-    let tilt = Quat::from_rotation_z(-SLOPE.atan());
-    for (lane, z) in LANES.iter().enumerate() {
-        for k in 0..4 {
-            let local_x = -1.2 + 0.3 * k as f32;
-            let (rotation, pos) = if lane < 2 {
-                (
-                    tilt,
-                    tilt * Vec3::new(local_x, 0.1, 0.0) + Vec3::new(0.0, 0.0, *z),
-                )
-            } else {
-                (Quat::IDENTITY, Vec3::new(local_x, -0.5 + 0.1, *z))
-            };
+    for lane in 0..3 {
+        let (_, rotation, _) = lane_frame(lane);
+        for k in 0..PARTS {
+            let along = START + SPACING * k as f32;
             commands.spawn((
                 Part(lane),
-                Mesh3d(palette.part_mesh.clone()),
-                MeshMaterial3d(palette.idle.clone()),
+                Mesh3d(palette.part.clone()),
+                MeshMaterial3d(palette.airborne.clone()),
                 RigidBody::Dynamic,
-                Collider::cuboid(0.05, 0.05, 0.05),
-                Transform::from_translation(pos).with_rotation(rotation),
+                Collider::cuboid(HALF, HALF, HALF),
+                Transform::from_translation(on_lane(lane, along, HALF)).with_rotation(rotation),
             ));
         }
     }
 }
 
-/// Moves the feeder trough along its throw direction, u(t) = A sin(ωt) (cos β, sin β).
+/// Moves the feeder trough along its throw direction, u(t) = A sin(ωt) (cos β, sin β), to
+/// where it must be at the end of this fixed step (`Time<Fixed>`'s elapsed time).
 fn drive_feeder(time: Res<Time>, mut troughs: Query<(&FeederTrough, &mut Transform)>) {
     let (a, f, beta) = FEEDER;
-    // The pose the step moves to: the end of this fixed step.
-    let t = time.elapsed_secs() + time.delta_secs();
-    let u = a * (std::f32::consts::TAU * f * t).sin();
+    let u = a * (std::f64::consts::TAU * f as f64 * time.elapsed_secs_f64()).sin() as f32;
     for (trough, mut transform) in &mut troughs {
-        transform.translation = trough.base + u * Vec3::new(beta.cos(), beta.sin(), 0.0);
+        let offset = if trough.on {
+            u * Vec3::new(beta.cos(), beta.sin(), 0.0)
+        } else {
+            Vec3::ZERO
+        };
+        transform.translation = trough.rest + offset;
+    }
+}
+
+/// Samples each lane's mean speed along the lane after every step.
+fn measure_speeds(time: Res<Time>, parts: Query<(&Part, &Velocity)>, mut speeds: ResMut<Speeds>) {
+    let t = time.elapsed_secs_f64();
+    let mut sum = [0.0f32; 3];
+    let mut n = [0usize; 3];
+    for (part, v) in &parts {
+        sum[part.0] += v.linear.dot(lane_frame(part.0).0);
+        n[part.0] += 1;
+    }
+    for lane in 0..3 {
+        let s = &mut speeds.samples[lane];
+        s.push_back((t, sum[lane] / n[lane].max(1) as f32));
+        while s.front().is_some_and(|(t0, _)| t - t0 > SPEED_WINDOW) {
+            s.pop_front();
+        }
+    }
+}
+
+/// A part past the end of its lane starts over at the top, at rest.
+fn restart_parts(mut parts: Query<(&Part, &mut Transform, &mut Velocity)>) {
+    for (part, mut transform, mut velocity) in &mut parts {
+        let (dir, rotation, centre) = lane_frame(part.0);
+        if (transform.translation - centre).dot(dir) > END {
+            *transform = Transform::from_translation(on_lane(part.0, START, HALF + 0.005))
+                .with_rotation(rotation);
+            *velocity = Velocity::default();
+        }
     }
 }
 
@@ -308,16 +452,21 @@ fn keys(
     keys: Res<ButtonInput<KeyCode>>,
     mut time: ResMut<Time<Virtual>>,
     mut gizmos: ResMut<GizmoConfigStore>,
-    shaker: Query<(Entity, Has<Vibration>), With<ShakerBase>>,
+    popov_base: Query<(Entity, Has<Vibration>), With<PopovBase>>,
+    mut feeder: Query<&mut FeederTrough>,
     parts: Query<Entity, With<Part>>,
+    mut speeds: ResMut<Speeds>,
 ) {
     if keys.just_pressed(KeyCode::KeyV) {
-        for (e, on) in &shaker {
+        for (e, on) in &popov_base {
             if on {
                 commands.entity(e).remove::<Vibration>();
             } else {
-                commands.entity(e).insert(vibration());
+                commands.entity(e).insert(popov_vibration());
             }
+        }
+        for mut trough in &mut feeder {
+            trough.on = !trough.on;
         }
     }
     if keys.just_pressed(KeyCode::Space) {
@@ -325,7 +474,7 @@ fn keys(
     }
     if keys.just_pressed(KeyCode::KeyS) {
         let slow = time.relative_speed() < 1.0;
-        time.set_relative_speed(if slow { 1.0 } else { 0.2 });
+        time.set_relative_speed(if slow { 1.0 } else { 0.1 });
     }
     if keys.just_pressed(KeyCode::KeyG) {
         gizmos.config_mut::<StickSlipGizmos>().0.enabled ^= true;
@@ -334,27 +483,20 @@ fn keys(
         for e in &parts {
             commands.entity(e).despawn();
         }
+        *speeds = Speeds::default();
         commands.run_system_cached(spawn_parts);
     }
 }
 
-/// The worst regime of each part's contacts sets its colour.
+/// The most slippery regime of a part's contacts sets its colour; white in flight.
 fn colour_parts(
     contacts: Res<ContactReports>,
     palette: Res<Palette>,
     mut parts: Query<(Entity, &mut MeshMaterial3d<StandardMaterial>), With<Part>>,
 ) {
     for (e, mut material) in &mut parts {
-        let worst = contacts
-            .of(e)
-            .map(|c| c.report.regime)
-            .max_by_key(|r| match r {
-                Regime::Sticking => 0,
-                Regime::StickSlip => 1,
-                Regime::Sliding => 2,
-            });
-        let handle = match worst {
-            None => &palette.idle,
+        let handle = match contacts.regime_of(e) {
+            None => &palette.airborne,
             Some(Regime::Sticking) => &palette.regimes[0],
             Some(Regime::StickSlip) => &palette.regimes[1],
             Some(Regime::Sliding) => &palette.regimes[2],
@@ -368,92 +510,103 @@ fn colour_parts(
 fn hud(
     contacts: Res<ContactReports>,
     time: Res<Time<Virtual>>,
-    parts: Query<(&Part, &Velocity)>,
-    shaker: Query<Has<Vibration>, With<ShakerBase>>,
+    theory: Res<Theory>,
+    speeds: Res<Speeds>,
+    popov_base: Query<Has<Vibration>, With<PopovBase>>,
     mut text: Query<&mut Text, With<Hud>>,
 ) {
-    let mut speed = [0.0f32; 3];
-    let mut count = [0usize; 3];
-    for (part, v) in &parts {
-        // Speed along each lane's downhill / forward direction.
-        let along = if part.0 < 2 {
-            Quat::from_rotation_z(-SLOPE.atan()) * Vec3::X
-        } else {
-            Vec3::X
-        };
-        speed[part.0] += v.linear.dot(along);
-        count[part.0] += 1;
-    }
-    for (s, n) in speed.iter_mut().zip(count) {
-        *s /= n.max(1) as f32;
-    }
-    let vib = shaker.iter().any(|on| on);
-    let totals = &contacts.totals;
     let Ok(mut text) = text.single_mut() else {
         return;
     };
+    let on = popov_base.iter().any(|on| on);
+    let totals = &contacts.totals;
+    let (a, f, throw) = FEEDER;
+    let state = match (time.is_paused(), time.relative_speed() < 1.0) {
+        (true, _) => "   [paused]",
+        (false, true) => "   [slow motion x0.1]",
+        _ => "",
+    };
     text.0 = format!(
-        "stickslip: friction that sticks, breaks away and changes when the surface vibrates\n\
-         t = {:.2} s{}{}\n\
-         lane 1  inclined trough, no vibration    mean speed {:+.4} m/s (EP holds: 0)\n\
-         lane 2  same trough, Popov vibration {}  mean speed {:+.4} m/s (theory {:.4} m/s)\n\
-         lane 3  vibratory feeder 3 mm, 15 Hz, throw 30 deg  mean speed {:+.4} m/s\n\
-         contacts: {} sticking, {} stick-slip, {} sliding; dissipated {:.2} W\n\
-         V vibration  Space pause  S slow motion  R reset  G gizmos",
-        contacts.time,
-        if time.is_paused() { "  [paused]" } else { "" },
-        if time.relative_speed() < 1.0 {
-            "  [slow motion]"
-        } else {
-            ""
-        },
-        speed[0],
-        if vib { "ON " } else { "OFF" },
-        speed[1],
-        theory_speed(),
-        speed[2],
-        totals.sticking,
-        totals.stick_slip,
-        totals.sliding,
-        totals.dissipated_power,
+        "stickslip: friction that holds, breaks away, and gives way to vibration\n\
+         t = {t:.2} s simulated{state}   vibration {vib}\n\
+         \n\
+         lane 1  slope {SLOPE}, EP mu0 {MU0}, no vibration      speed {s0:+.4} m/s   (held: 0)\n\
+         lane 2  same, Popov normal a {ALPHA}, {fk} kHz (avg)     speed {s1:+.4} m/s   theory {p:.4} m/s\n\
+         lane 3  feeder {am} mm, {f} Hz, throw {deg:.0} deg, G {g:.2}   speed {s2:+.4} m/s   point mass {fr:.4} m/s\n\
+         \n\
+         contacts: {st} sticking, {ss} stick-slip, {sl} sliding    friction dissipates {pw:.2} W\n\
+         parts: green sticking, orange stick-slip, red sliding, white in flight\n\
+         V vibration   Space pause   S slow motion   R reset   G gizmos",
+        t = contacts.time,
+        vib = if on { "ON" } else { "OFF" },
+        s0 = speeds.mean(0),
+        s1 = speeds.mean(1),
+        s2 = speeds.mean(2),
+        fk = F_POPOV / 1000.0,
+        p = if on { theory.popov } else { 0.0 },
+        am = a * 1000.0,
+        deg = throw.to_degrees(),
+        g = theory.throw_number,
+        fr = if on { theory.feeder } else { 0.0 },
+        st = totals.sticking,
+        ss = totals.stick_slip,
+        sl = totals.sliding,
+        pw = totals.dissipated_power,
     );
 }
 
-/// Frame after which the app exits once the screenshot is taken.
-#[derive(Resource, Default)]
-struct ExitAt(Option<u32>);
+/// Keeps each lane's label over the lane's lower end on screen.
+fn place_labels(
+    camera: Single<(&Camera, &GlobalTransform)>,
+    mut labels: Query<(&LaneLabel, &mut Node)>,
+) {
+    let (camera, at) = *camera;
+    for (label, mut node) in &mut labels {
+        let anchor = on_lane(label.0, 0.6, 0.0) + Vec3::new(0.0, 0.0, 0.3);
+        if let Ok(p) = camera.world_to_viewport(at, anchor) {
+            node.left = px(p.x);
+            node.top = px(p.y);
+        }
+    }
+}
 
-/// `--screenshot PATH --frames N`: save the window at frame N and exit (CI and docs). The
-/// PNG is written on an I/O task: exit a few frames later so that it is complete.
+/// 20 kHz cannot be seen: a wave drawn under the vibrating base says it is on.
+fn vibration_cue(
+    time: Res<Time>,
+    base: Query<&Transform, (With<PopovBase>, With<Vibration>)>,
+    mut gizmos: Gizmos,
+) {
+    let phase = time.elapsed_secs() * 6.0;
+    for transform in &base {
+        let points = (0..=120).map(|i| {
+            let x = -LENGTH / 2.0 + LENGTH * i as f32 / 120.0;
+            let y = -0.08 + 0.02 * (x * 25.0 - phase).sin();
+            transform.transform_point(Vec3::new(x, y, 0.26))
+        });
+        gizmos.linestrip(points, Color::srgb(0.4, 0.7, 1.0));
+    }
+}
+
+/// `--screenshot PATH --frames N`: save the window at frame N and exit; a screenshot that
+/// never arrives ends the run with an error instead of hanging it.
 fn shot_and_exit(
     mut commands: Commands,
     frames: Res<FrameCount>,
-    options: Res<Options>,
-    exit_at: Option<Res<ExitAt>>,
+    shot: Res<ShotAt>,
     mut exit: MessageWriter<AppExit>,
 ) {
-    let Some((path, n)) = &options.screenshot else {
-        return;
-    };
-    if frames.0 == *n {
-        let path = path.clone();
+    if frames.0 == shot.frame {
+        let path = shot.path.clone();
         commands.spawn(Screenshot::primary_window()).observe(
-            move |captured: On<ScreenshotCaptured>,
-                  frames: Res<FrameCount>,
-                  mut commands: Commands| {
+            move |captured: On<ScreenshotCaptured>, mut exit: MessageWriter<AppExit>| {
                 save_to_disk(path.clone())(captured);
-                commands.insert_resource(ExitAt(Some(frames.0 + 10)));
+                info!("saved {path}");
+                exit.write(AppExit::Success);
             },
         );
     }
-    if let Some(at) = exit_at.and_then(|e| e.0)
-        && frames.0 >= at
-    {
-        exit.write(AppExit::Success);
-    }
-    // A screenshot that never arrives must not hang a CI run.
-    if frames.0 > *n + 600 {
-        eprintln!("no screenshot after {} frames", frames.0);
+    if frames.0 > shot.frame + 300 {
+        error!("no screenshot {} frames after it was requested", 300);
         exit.write(AppExit::error());
     }
 }

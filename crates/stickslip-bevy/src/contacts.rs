@@ -1,8 +1,10 @@
 //! Contact read-back: every stickslip contact of the last step mapped to entities, world
 //! totals, and a message whenever a contact's regime changes.
 
+use crate::convert::to_bevy;
 use crate::world::StickSlipWorld;
 use bevy::prelude::*;
+use rapier3d::prelude as rp;
 use std::collections::HashMap;
 use stickslip_core::law::Regime;
 use stickslip_rapier::{ContactReport, WorldTotals};
@@ -14,6 +16,12 @@ pub struct Contact {
     pub collider1: Entity,
     /// Entity of the second collider.
     pub collider2: Entity,
+    /// The contact point (m, world): the centroid of the manifold's solver contacts, midway
+    /// between the two surfaces, taken from rapier's manifold after the step (world poses of
+    /// its local points).
+    pub point: Vec3,
+    /// The contact normal (world, from collider 1 towards collider 2).
+    pub normal: Vec3,
     /// What stickslip reports for it (regime, μ state, forces, slip, dissipated power).
     pub report: ContactReport,
 }
@@ -95,6 +103,8 @@ pub(crate) fn read_back(
         out.contacts.push(Contact {
             collider1: e1,
             collider2: e2,
+            point: world_point(&w, r).unwrap_or(Vec3::from_array(r.point)),
+            normal: Vec3::from_array(r.normal),
             report: *r,
         });
         if now.contains_key(&(e1, e2)) {
@@ -114,4 +124,29 @@ pub(crate) fn read_back(
     out.last = now;
     out.totals = w.friction.totals();
     out.time = w.friction.time();
+}
+
+/// The world-space centroid of the report's manifold, found by its normal among the pair's
+/// solver manifolds. (After a step rapier keeps a dynamic body's solver anchors in that
+/// body's local frame, so the anchors cannot be averaged as world points; the manifold's
+/// local points and the colliders' poses can.)
+fn world_point(w: &StickSlipWorld, r: &ContactReport) -> Option<Vec3> {
+    let pair = w.physics.contact_pair(r.collider1, r.collider2)?;
+    let m = pair
+        .solver_manifolds()
+        .iter()
+        .find(|m| !m.data.solver_contacts.is_empty() && m.data.normal.to_array() == r.normal)?;
+    let pose = |h: rp::ColliderHandle, sub: Option<&rp::Pose>| {
+        let at = *w.physics.colliders.get(h)?.position();
+        Some(sub.map_or(at, |s| at * *s))
+    };
+    let pos1 = pose(pair.collider1, m.subshape_pos1())?;
+    let pos2 = pose(pair.collider2, m.subshape_pos2())?;
+    let mut sum = rp::Vector::ZERO;
+    for c in &m.data.solver_contacts {
+        let id = (c.contact_id[0] & !rp::NEW_CONTACT_BIT) as usize;
+        let p = m.points.get(id)?;
+        sum += (pos1 * p.local_p1 + pos2 * p.local_p2) * 0.5;
+    }
+    Some(to_bevy(sum / m.data.solver_contacts.len() as f32))
 }

@@ -71,8 +71,7 @@ impl Plugin for StickSlipDebugPlugin {
 fn draw_contacts(contacts: Res<ContactReports>, mut gizmos: Gizmos<StickSlipGizmos>) {
     let cfg = gizmos.config_ext.clone();
     for c in &contacts.contacts {
-        let r = &c.report;
-        let p = Vec3::from_array(r.point);
+        let (r, p) = (&c.report, c.point);
         let color = regime_color(r.regime);
         gizmos.sphere(p, cfg.point_radius, color);
         let f = Vec3::from_array(r.friction_force) * cfg.force_scale;
@@ -80,11 +79,7 @@ fn draw_contacts(contacts: Res<ContactReports>, mut gizmos: Gizmos<StickSlipGizm
             gizmos.arrow(p, p + f, color);
         }
         if cfg.normal_length > 0.0 {
-            gizmos.ray(
-                p,
-                Vec3::from_array(r.normal) * cfg.normal_length,
-                Color::WHITE,
-            );
+            gizmos.ray(p, c.normal * cfg.normal_length, Color::WHITE);
         }
     }
 }

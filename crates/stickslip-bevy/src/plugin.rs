@@ -48,7 +48,14 @@ impl Default for StickSlipPhysicsPlugin {
 
 impl Plugin for StickSlipPhysicsPlugin {
     fn build(&self, app: &mut App) {
-        app.insert_resource(StickSlipWorld::new(default_material()))
+        // The modifier's own default material is the app's `DefaultFriction` (inserted before
+        // the plugins, or the default); `FrictionLaw(None)` colliders follow later changes.
+        let defaults = app
+            .world_mut()
+            .get_resource_or_init::<DefaultFriction>()
+            .0
+            .clone();
+        app.insert_resource(StickSlipWorld::new(defaults))
             .init_resource::<Gravity>()
             .configure_sets(
                 self.schedule,
