@@ -55,7 +55,7 @@ const FEEDER: (f32, f32, f32) = (0.003, 15.0, FRAC_PI_6);
 const PHYSICS_HZ: f64 = 3000.0;
 /// Lane centres along z, and the lanes' length (m) and the parts' start and restart
 /// positions along them.
-const LANES: [f32; 3] = [-1.0, 0.0, 1.0];
+const LANES: [f32; 3] = [-0.8, 0.0, 0.8];
 const LENGTH: f32 = 3.0;
 const START: f32 = -1.3;
 const END: f32 = 1.3;
@@ -101,7 +101,7 @@ fn main() -> AppExit {
         FixedPostUpdate,
         (
             drive_feeder.before(StickSlipSystems::Prepare),
-            (measure_speeds, restart_parts).after(StickSlipSystems::Writeback),
+            (tally_regimes, measure_speeds, restart_parts).after(StickSlipSystems::Writeback),
         ),
     )
     .add_systems(
@@ -188,7 +188,18 @@ impl Theory {
 
 /// A part, on lane 0, 1 or 2.
 #[derive(Component)]
+#[require(RegimeTally, LastAlong)]
 struct Part(usize);
+
+/// A part's position along its lane after the previous step (m).
+#[derive(Component, Default)]
+struct LastAlong(Option<f32>);
+
+/// How many physics steps since the last frame a part spent sticking, in stick-slip, sliding
+/// or without contact: a frame spans many steps (100 at 30 frames/s), so its colour is the
+/// regime of most of them, not of whichever step came last.
+#[derive(Component, Default)]
+struct RegimeTally([u32; 4]);
 
 /// The base of lane 2 (carries the Popov vibration).
 #[derive(Component)]
@@ -223,8 +234,8 @@ struct Speeds {
 }
 
 impl Speeds {
-    /// Time-averaged mean speed of lane `i` (m/s): the displacement rate even for hopping
-    /// parts and across restarts.
+    /// Time-averaged mean speed of lane `i` (m/s): the parts' displacement rate, also for
+    /// hopping parts and across restarts.
     fn mean(&self, i: usize) -> f32 {
         let s = &self.samples[i];
         s.iter().map(|(_, v)| v).sum::<f32>() / s.len().max(1) as f32
@@ -238,7 +249,7 @@ fn lane_frame(lane: usize) -> (Vec3, Quat, Vec3) {
         let tilt = Quat::from_rotation_z(-(SLOPE as f32).atan());
         (tilt * Vec3::X, tilt, Vec3::new(0.0, 0.0, z))
     } else {
-        (Vec3::X, Quat::IDENTITY, Vec3::new(0.0, -0.75, z))
+        (Vec3::X, Quat::IDENTITY, Vec3::new(0.0, -0.45, z))
     }
 }
 
@@ -269,12 +280,20 @@ fn popov_vibration() -> Vibration {
 
 fn setup(
     mut commands: Commands,
+    theory: Res<Theory>,
+    mut gizmos: ResMut<GizmoConfigStore>,
     mut meshes: ResMut<Assets<Mesh>>,
     mut materials: ResMut<Assets<StandardMaterial>>,
 ) {
+    // Contact gizmos sized for 8 cm parts of 0.5 kg: arrows of 6 cm per newton.
+    let (config, contacts) = gizmos.config_mut::<StickSlipGizmos>();
+    config.line.width = 3.0;
+    contacts.force_scale = 0.06;
+    contacts.normal_length = 0.08;
+    contacts.point_radius = 0.012;
     commands.spawn((
         Camera3d::default(),
-        Transform::from_xyz(0.6, 1.9, 3.6).looking_at(Vec3::new(0.0, -0.35, 0.0), Vec3::Y),
+        Transform::from_xyz(0.45, 2.35, 3.4).looking_at(Vec3::new(0.45, 0.0, -0.2), Vec3::Y),
     ));
     commands.spawn((
         DirectionalLight {
@@ -348,11 +367,21 @@ fn setup(
                 ChildOf(trough),
             ));
         }
+        let (a, f, throw) = FEEDER;
         let title = [
-            "1  no vibration: held",
-            "2  Popov normal vibration",
-            "3  vibratory feeder",
-        ][lane];
+            format!("1  no vibration\n   slope {SLOPE}, EP mu0 {MU0}"),
+            format!(
+                "2  Popov normal vibration\n   a {ALPHA}, {} kHz, averaged",
+                F_POPOV / 1000.0
+            ),
+            format!(
+                "3  vibratory feeder\n   {} mm, {f} Hz, {:.0} deg, G {:.2}",
+                a * 1000.0,
+                throw.to_degrees(),
+                theory.throw_number
+            ),
+        ][lane]
+            .clone();
         commands.spawn((
             LaneLabel(lane),
             Text::new(title),
@@ -371,15 +400,17 @@ fn setup(
         Hud,
         Text::new(""),
         TextFont {
-            font_size: FontSize::Px(16.0),
+            font_size: FontSize::Px(15.0),
             ..default()
         },
         Node {
             position_type: PositionType::Absolute,
-            top: px(10),
-            left: px(12),
+            top: px(8),
+            left: px(8),
+            padding: UiRect::all(px(8)),
             ..default()
         },
+        BackgroundColor(Color::srgba(0.0, 0.0, 0.0, 0.55)),
     ));
 }
 
@@ -395,6 +426,9 @@ fn spawn_parts(mut commands: Commands, palette: Res<Palette>) {
                 MeshMaterial3d(palette.airborne.clone()),
                 RigidBody::Dynamic,
                 Collider::cuboid(HALF, HALF, HALF),
+                // Point-mass-like, as the feeder's reference: a free box rocks on the
+                // compliant contact and can walk down a slope.
+                LockRotations,
                 Transform::from_translation(on_lane(lane, along, HALF)).with_rotation(rotation),
             ));
         }
@@ -416,18 +450,29 @@ fn drive_feeder(time: Res<Time>, mut troughs: Query<(&FeederTrough, &mut Transfo
     }
 }
 
-/// Samples each lane's mean speed along the lane after every step.
-fn measure_speeds(time: Res<Time>, parts: Query<(&Part, &Velocity)>, mut speeds: ResMut<Speeds>) {
-    let t = time.elapsed_secs_f64();
+/// Samples each lane's mean speed along the lane after every step, from the parts'
+/// displacements (a jump back to the start is not a displacement).
+fn measure_speeds(
+    time: Res<Time>,
+    mut parts: Query<(&Part, &Transform, &mut LastAlong)>,
+    mut speeds: ResMut<Speeds>,
+) {
+    let (t, dt) = (time.elapsed_secs_f64(), time.delta_secs());
     let mut sum = [0.0f32; 3];
     let mut n = [0usize; 3];
-    for (part, v) in &parts {
-        sum[part.0] += v.linear.dot(lane_frame(part.0).0);
-        n[part.0] += 1;
+    for (part, transform, mut last) in &mut parts {
+        let (dir, _, centre) = lane_frame(part.0);
+        let along = (transform.translation - centre).dot(dir);
+        if let Some(before) = last.0.replace(along)
+            && (along - before).abs() < 0.5
+        {
+            sum[part.0] += along - before;
+            n[part.0] += 1;
+        }
     }
     for lane in 0..3 {
         let s = &mut speeds.samples[lane];
-        s.push_back((t, sum[lane] / n[lane].max(1) as f32));
+        s.push_back((t, sum[lane] / n[lane].max(1) as f32 / dt));
         while s.front().is_some_and(|(t0, _)| t - t0 > SPEED_WINDOW) {
             s.pop_front();
         }
@@ -488,18 +533,33 @@ fn keys(
     }
 }
 
-/// The most slippery regime of a part's contacts sets its colour; white in flight.
+/// Counts each part's regime (the most slippery of its contacts) after every step.
+fn tally_regimes(contacts: Res<ContactReports>, mut parts: Query<(Entity, &mut RegimeTally)>) {
+    for (e, mut tally) in &mut parts {
+        let i = match contacts.regime_of(e) {
+            Some(Regime::Sticking) => 0,
+            Some(Regime::StickSlip) => 1,
+            Some(Regime::Sliding) => 2,
+            None => 3,
+        };
+        tally.0[i] += 1;
+    }
+}
+
+/// A part's colour: the regime of most steps since the last frame; white in flight.
 fn colour_parts(
-    contacts: Res<ContactReports>,
     palette: Res<Palette>,
-    mut parts: Query<(Entity, &mut MeshMaterial3d<StandardMaterial>), With<Part>>,
+    mut parts: Query<(&mut RegimeTally, &mut MeshMaterial3d<StandardMaterial>)>,
 ) {
-    for (e, mut material) in &mut parts {
-        let handle = match contacts.regime_of(e) {
-            None => &palette.airborne,
-            Some(Regime::Sticking) => &palette.regimes[0],
-            Some(Regime::StickSlip) => &palette.regimes[1],
-            Some(Regime::Sliding) => &palette.regimes[2],
+    for (mut tally, mut material) in &mut parts {
+        if tally.0 == [0; 4] {
+            continue; // no step since the last frame (paused)
+        }
+        let most = (0..4).max_by_key(|i| (tally.0[*i], *i)).unwrap_or(3);
+        tally.0 = [0; 4];
+        let handle = match most {
+            0..=2 => &palette.regimes[most],
+            _ => &palette.airborne,
         };
         if material.0 != *handle {
             material.0 = handle.clone();
@@ -520,34 +580,38 @@ fn hud(
     };
     let on = popov_base.iter().any(|on| on);
     let totals = &contacts.totals;
-    let (a, f, throw) = FEEDER;
     let state = match (time.is_paused(), time.relative_speed() < 1.0) {
         (true, _) => "   [paused]",
         (false, true) => "   [slow motion x0.1]",
         _ => "",
     };
+    let (popov, feeder) = if on {
+        (
+            format!("{:.3} m/s  Popov: mu0 (1 - a Psi(b*)) = tan", theory.popov),
+            format!("{:.3} m/s  point-mass reference", theory.feeder),
+        )
+    } else {
+        (
+            "0          (vibration off)".into(),
+            "0          (vibration off)".into(),
+        )
+    };
     text.0 = format!(
-        "stickslip: friction that holds, breaks away, and gives way to vibration\n\
-         t = {t:.2} s simulated{state}   vibration {vib}\n\
+        "stickslip: vibrating conveyor    t = {t:.2} s    vibration {vib}{state}\n\
          \n\
-         lane 1  slope {SLOPE}, EP mu0 {MU0}, no vibration      speed {s0:+.4} m/s   (held: 0)\n\
-         lane 2  same, Popov normal a {ALPHA}, {fk} kHz (avg)     speed {s1:+.4} m/s   theory {p:.4} m/s\n\
-         lane 3  feeder {am} mm, {f} Hz, throw {deg:.0} deg, G {g:.2}   speed {s2:+.4} m/s   point mass {fr:.4} m/s\n\
+         transport speed         measured    theory\n\
+         1  no vibration         {s0:+.3} m/s  0          (EP holds: no creep)\n\
+         2  Popov vibration      {s1:+.3} m/s  {popov}\n\
+         3  vibratory feeder     {s2:+.3} m/s  {feeder}\n\
          \n\
-         contacts: {st} sticking, {ss} stick-slip, {sl} sliding    friction dissipates {pw:.2} W\n\
-         parts: green sticking, orange stick-slip, red sliding, white in flight\n\
-         V vibration   Space pause   S slow motion   R reset   G gizmos",
+         contacts  {st} sticking, {ss} stick-slip, {sl} sliding;  friction dissipates {pw:.2} W\n\
+         parts     green sticking, orange stick-slip, red sliding, white in flight\n\
+         keys      V vibration  Space pause  S slow motion  R reset  G gizmos",
         t = contacts.time,
         vib = if on { "ON" } else { "OFF" },
         s0 = speeds.mean(0),
         s1 = speeds.mean(1),
         s2 = speeds.mean(2),
-        fk = F_POPOV / 1000.0,
-        p = if on { theory.popov } else { 0.0 },
-        am = a * 1000.0,
-        deg = throw.to_degrees(),
-        g = theory.throw_number,
-        fr = if on { theory.feeder } else { 0.0 },
         st = totals.sticking,
         ss = totals.stick_slip,
         sl = totals.sliding,
@@ -555,14 +619,14 @@ fn hud(
     );
 }
 
-/// Keeps each lane's label over the lane's lower end on screen.
+/// Keeps each lane's label beside the lane's lower (front) end on screen.
 fn place_labels(
     camera: Single<(&Camera, &GlobalTransform)>,
     mut labels: Query<(&LaneLabel, &mut Node)>,
 ) {
     let (camera, at) = *camera;
     for (label, mut node) in &mut labels {
-        let anchor = on_lane(label.0, 0.6, 0.0) + Vec3::new(0.0, 0.0, 0.3);
+        let anchor = on_lane(label.0, LENGTH / 2.0 + 0.05, 0.0) + Vec3::new(0.0, 0.0, 0.2);
         if let Ok(p) = camera.world_to_viewport(at, anchor) {
             node.left = px(p.x);
             node.top = px(p.y);
