@@ -1,5 +1,7 @@
-# stickslip-bevy in CI: what `.ci/run` should add (after `bash scripts/test.sh`, which already
-# runs the crate's headless tests as part of the workspace). Assumes the script's
+# stickslip-bevy in CI: what `.ci/run` should run (after `bash scripts/test.sh`, which already
+# runs the crate's headless tests as part of the workspace). `.ci/run` now calls
+# scripts/bevy_screenshot.sh, which covers the Xvfb part with a weaker blank check (raw
+# filtered bytes); this is the full set and can replace that line. Assumes the script's
 # `set -euo pipefail`, the repository root as working directory and CARGO_TARGET_DIR exported.
 #
 # Cost: the window feature set compiles bevy's renderer, a second bevy build beside the
