@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The bevy example `vibrating_conveyor` in a real window under Xvfb (software Vulkan): renders
-# FRAMES frames, saves the window to OUT and checks that the picture is not blank.
+# The bevy examples in a real window under Xvfb (software Vulkan): `vibrating_conveyor` renders
+# FRAMES frames and saves the window to OUT; `view` opens scenarios/incline.toml the same way
+# (saved beside OUT as *_view.png). Each picture is checked not to be blank.
 #   bash scripts/bevy_screenshot.sh [OUT] [FRAMES]
 # Installs what it needs from Debian's packages (xvfb, Mesa's Vulkan driver) when missing.
 set -euo pipefail
@@ -15,15 +16,20 @@ if ! command -v xvfb-run >/dev/null || [ ! -e /usr/share/vulkan/icd.d/lvp_icd.x8
         libxrandr2 libxi6 libxkbcommon-x11-0 >/dev/null
 fi
 
-cargo build -p stickslip-bevy --features window --example vibrating_conveyor
+cargo build -p stickslip-bevy --features window,scenario --example vibrating_conveyor --example view
 export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
 chmod 700 "$XDG_RUNTIME_DIR"
-rm -f "$OUT"
+VIEW_OUT="${OUT%.png}_view.png"
+rm -f "$OUT" "$VIEW_OUT"
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
     "$CARGO_TARGET_DIR/debug/examples/vibrating_conveyor" --screenshot "$OUT" --frames "$FRAMES"
+timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
+    "$CARGO_TARGET_DIR/debug/examples/view" scenarios/incline.toml \
+    --screenshot "$VIEW_OUT" --frames "$FRAMES"
 
 # Not blank: a PNG whose pixels vary (decoded with the standard library only).
-python3 - "$OUT" <<'PY'
+for png in "$OUT" "$VIEW_OUT"; do
+python3 - "$png" <<'PY'
 import struct, sys, zlib
 data = open(sys.argv[1], "rb").read()
 assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
@@ -45,3 +51,4 @@ print(f"{sys.argv[1]}: {width}x{height}, {distinct} distinct sampled byte values
 assert width >= 640 and height >= 360, "window too small"
 assert distinct > 16, "the screenshot looks blank"
 PY
+done

@@ -107,6 +107,27 @@ pub struct Density(pub f32);
 #[derive(Component, Debug, Clone, Copy, PartialEq)]
 pub struct Friction(pub f32);
 
+/// Mass of a collider (kg), instead of a [`Density`]: sets its body's mass.
+#[derive(Component, Debug, Clone, Copy, PartialEq)]
+pub struct ColliderMass(pub f32);
+
+/// Restitution of a collider's contacts (0: no bounce, the default).
+#[derive(Component, Debug, Clone, Copy, PartialEq, Default)]
+pub struct Restitution(pub f32);
+
+/// Velocity damping of a body (1/s): linear and angular.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Default)]
+pub struct Damping {
+    /// Linear damping (1/s).
+    pub linear: f32,
+    /// Angular damping (1/s).
+    pub angular: f32,
+}
+
+/// Continuous collision detection for a fast body (no tunnelling through thin colliders).
+#[derive(Component, Debug, Clone, Copy, PartialEq, Default)]
+pub struct Ccd;
+
 /// Lets a body fall asleep when slow. Off by default: rapier puts bodies to sleep below
 /// ~0.4 m/s, which would freeze parts a vibrating conveyor carries at a few cm/s.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Default)]

@@ -7,13 +7,17 @@
 //!
 //! - [`StickSlipPlugins`] (a `PluginGroup`):
 //!   - [`StickSlipPhysicsPlugin`], the rapier bridge: [`RigidBody`], [`Collider`] (on the body
-//!     or on a child), [`Velocity`], [`ExternalForce`], [`Density`], [`Friction`] (rapier's own
-//!     Coulomb), [`LockRotations`], [`AllowSleep`]; `Transform` in and out.
+//!     or on a child), [`Velocity`], [`ExternalForce`], [`Density`] or [`ColliderMass`],
+//!     [`Friction`] (rapier's own Coulomb), [`Restitution`], [`Damping`], [`Ccd`],
+//!     [`LockRotations`], [`AllowSleep`]; `Transform` in and out.
 //!   - [`StickSlipFrictionPlugin`], the friction layer: [`FrictionLaw`] per collider (or the
 //!     [`DefaultFriction`] resource's material), [`Vibration`], [`SurfaceVelocity`] (belts),
 //!     and the read-back: the [`ContactReports`] resource and [`RegimeChanged`] messages.
 //!   - with feature `debug`, `debug::StickSlipDebugPlugin`: contact gizmos coloured by
 //!     regime.
+//! - with feature `scenario`, [`scenario`]: the TOML scenarios of `stickslip run` spawned as
+//!   entities, their drivers acting on them (`cargo run -p stickslip-bevy --features
+//!   window,scenario --example view -- scenarios/incline.toml`).
 //! - Physics runs in `FixedPostUpdate` by default, in the chained sets [`StickSlipSystems`]
 //!   before transform propagation; `StickSlipPlugins::new(schedule)` picks another schedule.
 //!   The step is the schedule's `Time` delta (`Time<Fixed>`'s timestep in fixed schedules), so
@@ -69,14 +73,16 @@ mod friction;
 mod hooks;
 mod plugin;
 mod removal;
+#[cfg(feature = "scenario")]
+pub mod scenario;
 mod spawn;
 mod step;
 mod world;
 mod writeback;
 
 pub use components::{
-    AllowSleep, Collider, Density, ExternalForce, Friction, LockRotations, RapierBody,
-    RapierCollider, RigidBody, Velocity,
+    AllowSleep, Ccd, Collider, ColliderMass, Damping, Density, ExternalForce, Friction,
+    LockRotations, RapierBody, RapierCollider, Restitution, RigidBody, Velocity,
 };
 pub use contacts::{Contact, ContactReports, RegimeChanged};
 pub use friction::{DefaultFriction, FrictionLaw, SurfaceVelocity, Vibration, default_material};
@@ -94,9 +100,10 @@ pub use stickslip_rapier as rapier;
 /// stickslip types they wrap.
 pub mod prelude {
     pub use crate::{
-        AllowSleep, Collider, Contact, ContactReports, DefaultFriction, Density, ExternalForce,
-        Friction, FrictionLaw, Gravity, LockRotations, RegimeChanged, RigidBody, StickSlipPlugins,
-        StickSlipSystems, StickSlipWorld, SurfaceVelocity, Velocity, Vibration,
+        AllowSleep, Ccd, Collider, ColliderMass, Contact, ContactReports, Damping, DefaultFriction,
+        Density, ExternalForce, Friction, FrictionLaw, Gravity, LockRotations, RegimeChanged,
+        Restitution, RigidBody, StickSlipPlugins, StickSlipSystems, StickSlipWorld,
+        SurfaceVelocity, Velocity, Vibration,
     };
     pub use stickslip_core::law::{Law, Regime};
     pub use stickslip_core::waveform::Waveform;

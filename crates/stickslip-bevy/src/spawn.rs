@@ -16,6 +16,8 @@ pub(crate) struct ColliderData {
     parent: Option<&'static ChildOf>,
     friction: Option<&'static Friction>,
     density: Option<&'static Density>,
+    mass: Option<&'static ColliderMass>,
+    restitution: Option<&'static Restitution>,
 }
 
 /// Creates rapier bodies for new `RigidBody` entities, then colliders for new `Collider`
@@ -33,6 +35,7 @@ pub(crate) fn create_objects(
             &Velocity,
             Has<LockRotations>,
             Has<AllowSleep>,
+            (Option<&Damping>, Has<Ccd>),
             Option<&Children>,
         ),
         Without<RapierBody>,
@@ -43,11 +46,15 @@ pub(crate) fn create_objects(
 ) {
     let w = &mut *w;
     let mut adopted = Vec::new();
-    for (entity, kind, transform, velocity, locked, sleepy, children) in &bodies {
+    for (entity, kind, transform, velocity, locked, sleepy, (damping, ccd), children) in &bodies {
+        let damping = damping.copied().unwrap_or_default();
         let mut builder = rp::RigidBodyBuilder::new(kind.rapier_type())
             .pose(pose_of(transform))
             .linvel(to_rapier(velocity.linear))
             .angvel(to_rapier(velocity.angular))
+            .linear_damping(damping.linear)
+            .angular_damping(damping.angular)
+            .ccd_enabled(ccd)
             .can_sleep(sleepy);
         if locked {
             builder = builder.lock_rotations();
@@ -81,7 +88,12 @@ fn insert_collider(
 ) -> rp::ColliderHandle {
     let builder = rp::ColliderBuilder::new(c.collider.shape.clone())
         .friction(c.friction.map_or(0.5, |f| f.0))
-        .density(c.density.map_or(1000.0, |d| d.0));
+        .restitution(c.restitution.map_or(0.0, |r| r.0));
+    // A mass wins over a density (rapier keeps one of the two).
+    let builder = match (c.mass, c.density) {
+        (Some(m), _) => builder.mass(m.0),
+        (None, d) => builder.density(d.map_or(1000.0, |d| d.0)),
+    };
     let parent = c.parent.map(ChildOf::parent);
     if let Some(own) = w.body(c.entity) {
         return w.insert_collider(c.entity, builder, Some(own));
@@ -98,11 +110,29 @@ fn insert_collider(
     w.insert_collider(c.entity, builder.position(pose_of(&at)), None)
 }
 
-/// Applies changed body kinds and shapes to existing rapier objects.
+/// Applies changed body kinds, damping, shapes and collider materials to existing rapier
+/// objects.
+#[allow(clippy::type_complexity)]
 pub(crate) fn sync_changes(
     mut w: ResMut<StickSlipWorld>,
     kinds: Query<(&RigidBody, &RapierBody), Changed<RigidBody>>,
+    damping: Query<(&Damping, &RapierBody), Changed<Damping>>,
     shapes: Query<(&Collider, &RapierCollider), Changed<Collider>>,
+    surfaces: Query<
+        (
+            &RapierCollider,
+            Option<&Friction>,
+            Option<&Restitution>,
+            Option<&ColliderMass>,
+            Option<&Density>,
+        ),
+        Or<(
+            Changed<Friction>,
+            Changed<Restitution>,
+            Changed<ColliderMass>,
+            Changed<Density>,
+        )>,
+    >,
 ) {
     let w = &mut *w;
     for (kind, h) in &kinds {
@@ -110,9 +140,25 @@ pub(crate) fn sync_changes(
             b.set_body_type(kind.rapier_type(), true);
         }
     }
+    for (d, h) in &damping {
+        if let Some(b) = w.physics.bodies.get_mut(h.0) {
+            b.set_linear_damping(d.linear);
+            b.set_angular_damping(d.angular);
+        }
+    }
     for (collider, h) in &shapes {
         if let Some(c) = w.physics.colliders.get_mut(h.0) {
             c.set_shape(collider.shape.clone());
+        }
+    }
+    for (h, friction, restitution, mass, density) in &surfaces {
+        if let Some(c) = w.physics.colliders.get_mut(h.0) {
+            c.set_friction(friction.map_or(0.5, |f| f.0));
+            c.set_restitution(restitution.map_or(0.0, |r| r.0));
+            match (mass, density) {
+                (Some(m), _) => c.set_mass(m.0),
+                (None, d) => c.set_density(d.map_or(1000.0, |d| d.0)),
+            }
         }
     }
 }

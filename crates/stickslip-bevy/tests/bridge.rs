@@ -4,7 +4,9 @@
 //! with it; a `SurfaceVelocity` belt brings a part to the belt's speed; `Transform` and
 //! `Velocity` set by the user (teleports, kicks) reach rapier; an `ExternalForce` accelerates
 //! a free body at F/m and stops when removed; a body added to an entity with a (so far
-//! fixed) collider takes the collider over.
+//! fixed) collider takes the collider over; `ColliderMass` sets the mass, `Damping` slows a
+//! free body by rapier's implicit factor 1/(1 + c·dt) per step (≈ e^(−c·t)), `Restitution`
+//! makes a ball bounce back to e²·h, and changing them on a live body takes effect.
 
 mod common;
 use bevy::prelude::*;
@@ -217,4 +219,91 @@ fn a_body_added_later_takes_over_its_colliders() {
     let c = &w.physics.colliders[w.collider(e).unwrap()];
     assert_eq!(c.parent(), w.body(e));
     assert!((pos(&app, e).y - 0.2).abs() < 2e-3, "{}", pos(&app, e));
+}
+
+#[test]
+fn mass_damping_and_restitution_reach_rapier() {
+    let mut app = app();
+    zero_gravity(&mut app);
+    let c = 2.0f32;
+    let free = app
+        .world_mut()
+        .spawn((
+            RigidBody::Dynamic,
+            Collider::ball(0.1),
+            ColliderMass(3.0),
+            Damping {
+                linear: c,
+                angular: 0.0,
+            },
+            Velocity {
+                linear: Vec3::X,
+                angular: Vec3::ZERO,
+            },
+            Transform::from_xyz(0.0, 5.0, 0.0),
+        ))
+        .id();
+    steps(&mut app, 1);
+    let w = app.world().resource::<StickSlipWorld>();
+    let mass = w.physics.bodies[w.body(free).unwrap()].mass();
+    assert!((mass - 3.0).abs() < 1e-5, "mass {mass}");
+    steps(&mut app, HZ as usize - 1);
+    let v = app.world().get::<Velocity>(free).unwrap().linear.x as f64;
+    let discrete = (1.0 + c as f64 / HZ).powi(-(HZ as i32));
+    assert!((v - discrete).abs() < 1e-5, "v {v} vs rapier's {discrete}");
+    assert!(
+        (v / (-(c as f64)).exp() - 1.0).abs() < 0.02,
+        "v {v} vs e^-ct"
+    );
+
+    // Changing the damping on the live body: now none, the velocity stays.
+    app.world_mut().entity_mut(free).insert(Damping::default());
+    steps(&mut app, 1);
+    let v1 = app.world().get::<Velocity>(free).unwrap().linear.x;
+    steps(&mut app, 10);
+    let v2 = app.world().get::<Velocity>(free).unwrap().linear.x;
+    assert_eq!(v1, v2, "no damping: constant velocity");
+}
+
+#[test]
+fn restitution_bounces_a_ball_back() {
+    let mut app = app();
+    let e = 0.8f32;
+    app.world_mut().spawn((
+        RigidBody::Fixed,
+        Collider::cuboid(5.0, 0.1, 5.0),
+        Restitution(e),
+    ));
+    let h = 0.5f32;
+    let ball = app
+        .world_mut()
+        .spawn((
+            RigidBody::Dynamic,
+            Collider::ball(0.05),
+            Restitution(e),
+            Transform::from_xyz(0.0, 0.15 + h, 0.0),
+        ))
+        .id();
+    // Fall, bounce, and find the top of the first bounce.
+    let mut top = 0.0f32;
+    let mut bounced = false;
+    for _ in 0..(2 * HZ as usize) {
+        steps(&mut app, 1);
+        let y = pos(&app, ball).y - 0.15;
+        let vy = app.world().get::<Velocity>(ball).unwrap().linear.y;
+        if vy > 0.0 {
+            bounced = true;
+        }
+        if bounced {
+            top = top.max(y);
+            if vy < 0.0 {
+                break;
+            }
+        }
+    }
+    let expected = e * e * h;
+    assert!(
+        (top - expected).abs() < 0.05 * expected,
+        "bounce height {top} m vs e²h = {expected} m"
+    );
 }

@@ -104,6 +104,28 @@ impl<H: PhysicsHooks> StickSlip<H> {
         Ok(self)
     }
 
+    /// Replaces the tuning of a running modifier (validated first; nothing changes on error).
+    pub fn set_config(&mut self, config: StickSlipConfig) -> Result<(), ParamError> {
+        config.validate()?;
+        self.config = config;
+        Ok(())
+    }
+
+    /// The tuning in use.
+    pub fn config(&self) -> &StickSlipConfig {
+        &self.config
+    }
+
+    /// The material of attached colliders that have none of their own.
+    pub fn default_material(&self) -> &FrictionMaterial {
+        &self.default_material
+    }
+
+    /// The material a collider was given (`None`: it uses the default, or is not attached).
+    pub fn material(&self, collider: ColliderHandle) -> Option<&FrictionMaterial> {
+        self.materials.get(collider)
+    }
+
     /// The wrapped hooks.
     pub fn inner(&self) -> &H {
         &self.inner

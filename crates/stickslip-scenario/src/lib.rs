@@ -28,11 +28,13 @@
 #![warn(missing_docs)]
 
 mod build;
+mod drive;
 mod error;
 mod runner;
 pub mod spec;
 
 pub use build::{Driver, DriverAction, Scene, SceneBody, SceneCollider};
+pub use drive::apply_drivers;
 pub use error::{BuildError, ParseError, ScenarioError};
 pub use runner::{BodySummary, RegimeCounts, Runner, Summary};
 pub use spec::Scenario;

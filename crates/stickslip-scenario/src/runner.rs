@@ -1,8 +1,8 @@
 //! [`Runner`]: steps a [`Scene`] (drivers, then the stickslip step) and keeps a [`Summary`].
 
-use crate::build::{DriverAction, Scene};
+use crate::build::Scene;
+use crate::drive::apply_drivers;
 use crate::spec::BodyKind;
-use rapier3d::prelude::*;
 use serde::Serialize;
 use stickslip_core::law::Regime;
 
@@ -123,7 +123,8 @@ impl Runner {
         let scene = &mut self.scene;
         let t = scene.stickslip.time();
         let dt = scene.world.integration_parameters.dt as f64;
-        apply_drivers(scene, t, dt);
+        let handles = |i: usize| scene.bodies[i].handle;
+        apply_drivers(&scene.drivers, &mut scene.world.bodies, handles, t, dt);
         scene.stickslip.step(&mut scene.world);
         self.steps += 1;
         let reports = scene.stickslip.reports();
@@ -197,75 +198,4 @@ impl Runner {
 
 fn norm(v: [f64; 3]) -> f64 {
     (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
-}
-
-fn apply_drivers(scene: &mut Scene, t: f64, dt: f64) {
-    // Forces persist in rapier until reset: clear the driven bodies' forces first.
-    for d in &scene.drivers {
-        if !matches!(d.action, DriverAction::Velocity { .. })
-            && let Some(b) = scene.world.bodies.get_mut(scene.bodies[d.body].handle)
-        {
-            b.reset_forces(false);
-            b.reset_torques(false);
-        }
-    }
-    let t_mid = t + 0.5 * dt;
-    for d in &scene.drivers {
-        let Some(body) = scene.world.bodies.get_mut(scene.bodies[d.body].handle) else {
-            continue;
-        };
-        match &d.action {
-            DriverAction::Velocity {
-                linear,
-                angular,
-                start,
-            } => {
-                let on = t + 1e-12 >= *start;
-                body.set_linvel(if on { *linear } else { Vector::ZERO }, true);
-                body.set_angvel(if on { *angular } else { Vector::ZERO }, true);
-            }
-            DriverAction::Spring {
-                stiffness,
-                damping,
-                anchor,
-                anchor_velocity,
-                point,
-                axis,
-            } => {
-                let p = body.position().transform_point(*point);
-                let v = body.velocity_at_point(p);
-                let mut f = [0.0f64; 3];
-                for k in 0..3 {
-                    let a = anchor[k] + anchor_velocity[k] * t;
-                    f[k] = stiffness * (a - p[k] as f64)
-                        + damping * (anchor_velocity[k] - v[k] as f64);
-                }
-                if let Some(e) = axis {
-                    let along = f[0] * e[0] + f[1] * e[1] + f[2] * e[2];
-                    f = [along * e[0], along * e[1], along * e[2]];
-                }
-                let force = Vector::new(f[0] as f32, f[1] as f32, f[2] as f32);
-                body.add_force_at_point(force, p, true);
-            }
-            DriverAction::Force {
-                direction,
-                profile,
-                point,
-            } => {
-                let m = profile.value(t_mid);
-                let force = Vector::new(
-                    (direction[0] * m) as f32,
-                    (direction[1] * m) as f32,
-                    (direction[2] * m) as f32,
-                );
-                match point {
-                    Some(local) => {
-                        let p = body.position().transform_point(*local);
-                        body.add_force_at_point(force, p, true);
-                    }
-                    None => body.add_force(force, true),
-                }
-            }
-        }
-    }
 }
