@@ -4,7 +4,10 @@
 //! (`ColliderHandle::invalid()`, a huge index) are no-ops that allocate nothing; a step with a
 //! NaN, infinite or negative dt leaves the modifier's clock, totals and contact states as they
 //! were; NaN velocities injected into a body never reach the friction state (reports stay
-//! finite) and the contacts of other bodies carry on unchanged.
+//! finite) and the contacts of other bodies carry on unchanged; parameters that would
+//! overflow (or underflow) in a step — c·F_n beyond range, force amplitudes of 1e39 N,
+//! sliding curves reaching 1e30 — are refused by the constructors with the parameter's name
+//! and its admissible range.
 
 use rapier3d::prelude::*;
 use stickslip::core::law::Law;
@@ -109,4 +112,73 @@ fn nan_velocities_never_reach_the_friction_state() {
     // The healthy box still rests where it was.
     let p = world.bodies[boxes[1]].translation();
     assert!(p.is_finite() && (p.x - 3.0).abs() < 1e-3, "{p:?}");
+}
+
+#[test]
+fn parameters_that_overflow_in_use_are_refused_with_the_reason() {
+    use stickslip::core::ParamError;
+    use stickslip::core::law::{Physical, Regularization, Regularized};
+    let range = |e: ParamError| match e {
+        ParamError::OutOfRange { name, min, max, .. } => (name, min, max),
+        other => panic!("not a range error: {other}"),
+    };
+    let c = Curve::constant(0.4).unwrap();
+    // c·F_n beyond range (and g_ba below any roughness).
+    let e = Law::elasto_plastic(1e300, 0.5, 0.5, c.clone()).unwrap_err();
+    assert_eq!(range(e.clone()), ("c", 1e-3, 1e12));
+    assert!(e.to_string().contains("c"), "{e}");
+    // Sliding curves reaching 1e30, coefficients too small to be a friction limit in f32.
+    assert_eq!(range(Curve::constant(1e30).unwrap_err()).0, "mu");
+    assert_eq!(
+        range(Curve::table(vec![0.0, 1.0], vec![0.4, 1e30]).unwrap_err()).0,
+        "mu"
+    );
+    assert_eq!(
+        range(
+            Curve::stribeck(
+                0.5,
+                1e30,
+                0.01,
+                stickslip::core::sliding_curve::StribeckDecay::Gaussian,
+                0.0
+            )
+            .unwrap_err()
+        )
+        .0,
+        "mu_k"
+    );
+    assert_eq!(
+        range(Physical::new(1e-42, c.clone()).unwrap_err()).0,
+        "mu_ba"
+    );
+    assert_eq!(
+        range(Regularized::new(c.clone(), 1e38, Regularization::Linear).unwrap_err()).0,
+        "v_reg"
+    );
+    // Vibration amplitudes of 1e39 N, frequencies and ratios beyond any machine.
+    let source = |a, f| {
+        VibrationSource::new(
+            VibrationDirection::Normal,
+            a,
+            f,
+            Waveform::Sine,
+            0.0,
+            VibrationMode::TimeResolved,
+        )
+    };
+    assert_eq!(
+        range(source(Amplitude::Force(1e39), 100.0).unwrap_err()).0,
+        "amplitude force"
+    );
+    assert_eq!(
+        range(source(Amplitude::Ratio(1e39), 100.0).unwrap_err()).0,
+        "amplitude ratio"
+    );
+    assert_eq!(
+        range(source(Amplitude::Ratio(0.5), 1e300).unwrap_err()).0,
+        "frequency"
+    );
+    // The bounds themselves are accepted.
+    assert!(Law::elasto_plastic(1e12, 1e3, 1e3, Curve::constant(1e3).unwrap()).is_ok());
+    assert!(source(Amplitude::Force(stickslip::rapier::MAX_FORCE), 1e9).is_ok());
 }

@@ -79,6 +79,42 @@ pub fn finite(name: &'static str, value: f64) -> Result<f64, ParamError> {
     }
 }
 
+/// The range of friction coefficients (and sliding-curve values) the constructors accept.
+/// Real materials lie between ~1e-3 (superlubric) and ~5; the bounds keep μ·F_n a normal
+/// f32 (rapier's precision) for any normal force rapier can hold, so no accepted coefficient
+/// can underflow to a zero limit or overflow in a step.
+pub const MIN_COEFFICIENT: f64 = 1e-6;
+/// See [`MIN_COEFFICIENT`].
+pub const MAX_COEFFICIENT: f64 = 1e3;
+
+/// The range of elasto-plastic stiffnesses c (1/m) the constructors accept: break-away slips
+/// g_ba = μ_ba/c from 1e-12·μ_ba m (far below any contact's roughness) to 1e3·μ_ba m.
+pub const MIN_STIFFNESS: f64 = 1e-3;
+/// See [`MIN_STIFFNESS`].
+pub const MAX_STIFFNESS: f64 = 1e12;
+
+/// Checks that `value` is a friction coefficient: finite, in
+/// [[`MIN_COEFFICIENT`], [`MAX_COEFFICIENT`]].
+pub fn coefficient(name: &'static str, value: f64) -> Result<f64, ParamError> {
+    positive(name, value)?;
+    in_range(name, value, MIN_COEFFICIENT, MAX_COEFFICIENT)
+}
+
+/// Checks that a finite `value` is at most `max` (else [`ParamError::OutOfRange`] with the
+/// lower bound 0).
+pub fn at_most(name: &'static str, value: f64, max: f64) -> Result<f64, ParamError> {
+    if value <= max {
+        Ok(value)
+    } else {
+        Err(ParamError::OutOfRange {
+            name,
+            value,
+            min: 0.0,
+            max,
+        })
+    }
+}
+
 /// Checks that `value` is finite and strictly positive.
 pub fn positive(name: &'static str, value: f64) -> Result<f64, ParamError> {
     finite(name, value)?;

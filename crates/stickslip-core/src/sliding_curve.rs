@@ -5,7 +5,9 @@
 //! built-in, serializable set: constant, Stribeck with exponential or Gaussian decay plus an
 //! optional viscous term, and a sampled table. All are validated at construction.
 
-use crate::error::{ParamError, finite, non_negative, positive};
+use crate::error::{
+    MAX_COEFFICIENT, ParamError, at_most, coefficient, finite, non_negative, positive,
+};
 use serde::{Deserialize, Serialize};
 
 /// A sliding curve μ_ve(v) for slip speeds v ≥ 0.
@@ -73,7 +75,7 @@ pub enum Curve {
 impl Curve {
     /// A constant curve (plain Coulomb level).
     pub fn constant(mu: f64) -> Result<Self, ParamError> {
-        positive("mu", mu)?;
+        coefficient("mu", mu)?;
         Ok(Curve::Constant { mu })
     }
 
@@ -85,10 +87,12 @@ impl Curve {
         decay: StribeckDecay,
         viscous: f64,
     ) -> Result<Self, ParamError> {
-        positive("mu_s", mu_s)?;
-        positive("mu_k", mu_k)?;
+        coefficient("mu_s", mu_s)?;
+        coefficient("mu_k", mu_k)?;
         positive("v_s", v_s)?;
         non_negative("viscous", viscous)?;
+        // k_v·v stays finite for any speed rapier can hold.
+        at_most("viscous", viscous, MAX_COEFFICIENT)?;
         Ok(Curve::Stribeck {
             mu_s,
             mu_k,
@@ -115,7 +119,7 @@ impl Curve {
         }
         for (&v, &m) in speeds.iter().zip(&mus) {
             finite("speed", v)?;
-            positive("mu", m)?;
+            coefficient("mu", m)?;
         }
         if speeds.windows(2).any(|w| w[1] <= w[0]) {
             return Err(bad("speeds must be strictly increasing"));

@@ -116,7 +116,15 @@ fn key(c1: ColliderHandle, c2: ColliderHandle, m: &ContactManifold) -> ContactKe
 /// Elastic displacement of the law's spring, s⃗/k_t with k_t = c F_n (EP only).
 fn elastic_displacement(law: &Law, force: Vector, f_n: f64) -> Vector {
     match law {
-        Law::ElastoPlastic(l) if f_n > 0.0 => force / (l.c() * f_n) as f32,
+        Law::ElastoPlastic(l) if f_n > 0.0 => {
+            // In f64: c·F_n may lie outside f32's range even when the displacement does not.
+            let d = force.as_dvec3() / (l.c() * f_n);
+            if d.is_finite() {
+                d.as_vec3()
+            } else {
+                Vector::ZERO
+            }
+        }
         _ => Vector::ZERO,
     }
 }

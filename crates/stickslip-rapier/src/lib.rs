@@ -50,7 +50,10 @@ mod vibration;
 pub use material::FrictionMaterial;
 pub use modifier::{StickSlip, StickSlipConfig};
 pub use report::{ContactReport, WorldTotals};
-pub use vibration::{Amplitude, VibrationDirection, VibrationMode, VibrationSource};
+pub use vibration::{
+    Amplitude, MAX_FORCE, MAX_FREQUENCY, MAX_RATIO, MAX_TANGENTIAL_STIFFNESS, VibrationDirection,
+    VibrationMode, VibrationSource,
+};
 
 /// Re-export of the core crate.
 pub use stickslip_core as core;

@@ -21,7 +21,7 @@
 
 use serde::{Deserialize, Serialize};
 use stickslip_core::ParamError;
-use stickslip_core::error::{finite, non_negative, positive};
+use stickslip_core::error::{finite, in_range, positive};
 use stickslip_core::popov;
 use stickslip_core::waveform::Waveform;
 
@@ -64,6 +64,15 @@ pub enum VibrationMode {
     Averaged,
 }
 
+/// Largest amplitude ratio α a source accepts (α > 1 lifts a normally loaded contact off).
+pub const MAX_RATIO: f64 = 1e3;
+/// Largest force amplitude (N) a source accepts: far beyond any machine, far inside f32.
+pub const MAX_FORCE: f64 = 1e15;
+/// Largest frequency (Hz) a source accepts (ultrasonic sources run at 20–100 kHz).
+pub const MAX_FREQUENCY: f64 = 1e9;
+/// Largest tangential contact stiffness (N/m) a source accepts.
+pub const MAX_TANGENTIAL_STIFFNESS: f64 = 1e15;
+
 /// A vibration source attached to a collider (validated at construction).
 #[derive(Debug, Clone)]
 pub struct VibrationSource {
@@ -88,10 +97,12 @@ impl VibrationSource {
         phase: f64,
         mode: VibrationMode,
     ) -> Result<Self, ParamError> {
+        // Bounds that keep every force and phase of a step finite in rapier's f32.
         match amplitude {
-            Amplitude::Ratio(r) => non_negative("amplitude ratio", r)?,
-            Amplitude::Force(a) => non_negative("amplitude force", a)?,
+            Amplitude::Ratio(r) => in_range("amplitude ratio", r, 0.0, MAX_RATIO)?,
+            Amplitude::Force(a) => in_range("amplitude force", a, 0.0, MAX_FORCE)?,
         };
+        in_range("frequency", frequency, 0.0, MAX_FREQUENCY)?;
         positive("frequency", frequency)?;
         finite("phase", phase)?;
         if let VibrationDirection::Tangential { axis } | VibrationDirection::Transverse { axis } =
@@ -121,7 +132,9 @@ impl VibrationSource {
     /// Tangential stiffness k_t (N/m) of the contact, used for β in averaged mode. Default:
     /// c·F̄ of an elasto-plastic material (required for other laws).
     pub fn with_tangential_stiffness(mut self, k_t: f64) -> Result<Self, ParamError> {
-        self.tangential_stiffness = Some(positive("tangential stiffness", k_t)?);
+        positive("tangential stiffness", k_t)?;
+        in_range("tangential stiffness", k_t, 0.0, MAX_TANGENTIAL_STIFFNESS)?;
+        self.tangential_stiffness = Some(k_t);
         Ok(self)
     }
 

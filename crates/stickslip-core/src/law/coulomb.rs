@@ -1,7 +1,7 @@
 //! Plain Coulomb friction: what rapier does without stickslip.
 
 use super::{FrictionLaw, FrictionState, Regime, StepInput, StepOutput, memoryless, unloaded};
-use crate::error::{ParamError, positive};
+use crate::error::{ParamError, coefficient};
 use crate::vec2::{normalize, scale};
 use serde::{Deserialize, Serialize};
 
@@ -25,10 +25,10 @@ impl TryFrom<CoulombParams> for Coulomb {
 }
 
 impl Coulomb {
-    /// Coulomb friction with coefficient `mu` > 0.
+    /// Coulomb friction with coefficient 0 < `mu` ≤ [`crate::error::MAX_COEFFICIENT`].
     pub fn new(mu: f64) -> Result<Self, ParamError> {
         Ok(Coulomb {
-            mu: positive("mu", mu)?,
+            mu: coefficient("mu", mu)?,
         })
     }
 

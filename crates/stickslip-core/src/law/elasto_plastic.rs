@@ -52,7 +52,7 @@
 //! reported dissipation is the work the step's forces do minus the change of stored energy.
 
 use super::{FrictionLaw, FrictionState, StepInput, StepOutput, unloaded};
-use crate::error::{ParamError, positive};
+use crate::error::{MAX_STIFFNESS, MIN_STIFFNESS, ParamError, coefficient, in_range, positive};
 use crate::sliding_curve::{Curve, SlidingCurve};
 use crate::switch::{Regime, alpha, regime};
 use crate::vec2::{Vec2, add, clamp_norm, dot, norm, normalize, scale, sub};
@@ -166,16 +166,19 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
     /// `mu_ba <= mu_max` of the switch, and any sliding curve μ_ve > 0 (rising, flat, or
     /// falling below μ_ba: static friction above kinetic friction).
     ///
-    /// Errors: non-finite values, `c <= 0`, `mu_ba <= 0`, `mu_ba > mu_max`, a curve that is
-    /// not positive at rest.
+    /// Errors: non-finite values, `c` outside [[`crate::error::MIN_STIFFNESS`],
+    /// [`crate::error::MAX_STIFFNESS`]], coefficients outside
+    /// [[`crate::error::MIN_COEFFICIENT`], [`crate::error::MAX_COEFFICIENT`]], `mu_ba > mu_max`,
+    /// a curve whose value at rest is not such a coefficient.
     pub fn new(c: f64, mu_ba: f64, mu_max: f64, curve: C) -> Result<Self, ParamError> {
         positive("c", c)?;
-        positive("mu_ba", mu_ba)?;
-        positive("mu_max", mu_max)?;
+        in_range("c", c, MIN_STIFFNESS, MAX_STIFFNESS)?;
+        coefficient("mu_ba", mu_ba)?;
+        coefficient("mu_max", mu_max)?;
         if mu_ba > mu_max {
             return Err(ParamError::BreakAwayAboveMax { mu_ba, mu_max });
         }
-        positive("mu_ve(0+)", curve.at_rest())?;
+        coefficient("mu_ve(0+)", curve.at_rest())?;
         Ok(ElastoPlastic {
             c,
             mu_ba,

@@ -5,7 +5,7 @@
 //! limit μ_ba. Stick-slip (ġ = 0, |F_et| ≥ F_ba): F_f = −F_n μ_ba sgn F_et.
 
 use super::{FrictionLaw, FrictionState, Regime, StepInput, StepOutput, memoryless, unloaded};
-use crate::error::{ParamError, positive};
+use crate::error::{ParamError, coefficient, positive};
 use crate::sliding_curve::{Curve, SlidingCurve};
 use crate::vec2::{normalize, scale};
 use serde::{Deserialize, Serialize};
@@ -53,7 +53,7 @@ impl From<Physical> for PhysicalParams {
 impl Physical {
     /// Break-away coefficient `mu_ba` > 0 and sliding curve.
     pub fn new(mu_ba: f64, curve: Curve) -> Result<Self, ParamError> {
-        positive("mu_ba", mu_ba)?;
+        coefficient("mu_ba", mu_ba)?;
         curve.validate()?;
         Ok(Physical {
             mu_ba,

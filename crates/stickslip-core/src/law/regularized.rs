@@ -5,7 +5,7 @@
 //! ġ_t0·F_et/(μ F_n). Smaller ġ_t0 creeps less but makes the ODE stiffer.
 
 use super::{FrictionLaw, FrictionState, Regime, StepInput, StepOutput, memoryless, unloaded};
-use crate::error::{ParamError, positive};
+use crate::error::{ParamError, at_most, positive};
 use crate::sliding_curve::{Curve, SlidingCurve};
 use crate::vec2::{normalize, scale};
 use serde::{Deserialize, Serialize};
@@ -78,11 +78,16 @@ impl From<Regularized> for RegularizedParams {
     }
 }
 
+/// The largest regularization velocity ġ_t0 (m/s) [`Regularized::new`] accepts.
+pub const MAX_REGULARIZATION_SPEED: f64 = 1e3;
+
 impl Regularized {
     /// Sliding curve, regularization velocity ġ_t0 = `v_reg` (m/s) > 0, ramp shape.
     pub fn new(curve: Curve, v_reg: f64, shape: Regularization) -> Result<Self, ParamError> {
         curve.validate()?;
         positive("v_reg", v_reg)?;
+        // Beyond this no contact ever reaches full friction; the ramp's slopes stay finite.
+        at_most("v_reg", v_reg, MAX_REGULARIZATION_SPEED)?;
         Ok(Regularized {
             curve,
             v_reg,
