@@ -2,6 +2,7 @@
 //! modifier and the drivers).
 
 use crate::error::BuildError;
+use crate::limits::*;
 use crate::spec::{
     BodyKind, BodySpec, ColliderSpec, DEFAULT_STEPS, DriverSpec, FrictionModelSpec, Scenario,
     ShapeSpec,
@@ -137,6 +138,45 @@ fn finite3(field: &str, v: [f64; 3]) -> Result<[f64; 3], BuildError> {
     }
 }
 
+/// A number that becomes an f32 in rapier: finite and at most [`MAX_MAGNITUDE`] in size.
+fn magnitude(field: &str, v: f64) -> Result<f64, BuildError> {
+    finite(field, v)?;
+    if v.abs() <= MAX_MAGNITUDE {
+        Ok(v)
+    } else {
+        Err(invalid(
+            field,
+            format!("|{v}| exceeds {MAX_MAGNITUDE:e}, beyond what rapier's f32 world can hold"),
+        ))
+    }
+}
+
+fn magnitude3(field: &str, v: [f64; 3]) -> Result<[f64; 3], BuildError> {
+    for (k, x) in v.iter().enumerate() {
+        magnitude(&format!("{field}[{k}]"), *x)?;
+    }
+    Ok(v)
+}
+
+/// A positive number that becomes an f32 in rapier, in `[min, MAX_MAGNITUDE]`.
+fn positive_at_least(field: &str, v: f64, min: f64) -> Result<f64, BuildError> {
+    magnitude(field, v)?;
+    if v >= min {
+        Ok(v)
+    } else {
+        Err(invalid(field, format!("must be >= {min:e}, got {v}")))
+    }
+}
+
+/// A count in `[1, max]`.
+fn count(field: &str, v: u64, max: u64) -> Result<u64, BuildError> {
+    if (1..=max).contains(&v) {
+        Ok(v)
+    } else {
+        Err(invalid(field, format!("must be in 1..={max}, got {v}")))
+    }
+}
+
 fn positive(field: &str, v: f64) -> Result<f64, BuildError> {
     finite(field, v)?;
     if v > 0.0 {
@@ -241,11 +281,19 @@ impl Scenario {
     /// Checks every value and reference without building anything.
     pub fn validate(&self) -> Result<(), BuildError> {
         let w = &self.world;
-        finite3("world.gravity", w.gravity)?;
+        magnitude3("world.gravity", w.gravity)?;
         positive("world.dt", w.dt)?;
-        if w.solver_iterations == 0 {
-            return Err(invalid("world.solver_iterations", "must be >= 1"));
+        if !(MIN_DT..=MAX_DT).contains(&w.dt) {
+            return Err(invalid(
+                "world.dt",
+                format!("must be in [{MIN_DT:e}, {MAX_DT}] s, got {}", w.dt),
+            ));
         }
+        count(
+            "world.solver_iterations",
+            w.solver_iterations as u64,
+            MAX_SOLVER_ITERATIONS as u64,
+        )?;
         let r = &self.run;
         if r.steps.is_some() && r.duration.is_some() {
             return Err(invalid(
@@ -256,11 +304,76 @@ impl Scenario {
         if r.steps == Some(0) {
             return Err(invalid("run.steps", "must be >= 1"));
         }
+        if let Some(n) = r.steps {
+            count("run.steps", n, MAX_STEPS)?;
+        }
         if let Some(d) = r.duration {
             positive("run.duration", d)?;
+            // In f64: a duration/dt beyond u64 must not wrap around to a short run.
+            if d / w.dt > MAX_STEPS as f64 {
+                return Err(invalid(
+                    "run.duration",
+                    format!("{d} s at dt = {} s is more than {MAX_STEPS} steps", w.dt),
+                ));
+            }
         }
         if r.log_every == 0 {
             return Err(invalid("run.log_every", "must be >= 1"));
+        }
+        if r.max_contact_series > MAX_CONTACT_SERIES {
+            return Err(invalid(
+                "run.max_contact_series",
+                format!(
+                    "must be <= {MAX_CONTACT_SERIES}, got {}",
+                    r.max_contact_series
+                ),
+            ));
+        }
+        // Sizes before anything is allocated per body: a repeat count of 1e9 is an error
+        // here, not a billion names below.
+        let (mut bodies, mut colliders) = (0u64, 0u64);
+        for (i, b) in self.bodies.iter().enumerate() {
+            let n = match &b.repeat {
+                Some(rep) => count(
+                    &format!("body[{i}].repeat.count"),
+                    rep.count as u64,
+                    MAX_BODIES,
+                )?,
+                None => 1,
+            };
+            bodies += n;
+            colliders += n * b.colliders.len() as u64;
+            if bodies > MAX_BODIES {
+                return Err(invalid(
+                    format!("body[{i}]"),
+                    format!("the scenario has more than {MAX_BODIES} bodies (repeats expanded)"),
+                ));
+            }
+            if colliders > MAX_COLLIDERS {
+                return Err(invalid(
+                    format!("body[{i}].collider"),
+                    format!(
+                        "the scenario has more than {MAX_COLLIDERS} colliders (repeats expanded)"
+                    ),
+                ));
+            }
+        }
+        let work = self.steps().saturating_mul(bodies + colliders);
+        if work > MAX_WORK {
+            let field = if r.duration.is_some() {
+                "run.duration"
+            } else {
+                "run.steps"
+            };
+            return Err(invalid(
+                field,
+                format!(
+                    "{} steps x {} bodies and colliders = {work:e} exceeds {MAX_WORK:e} \
+                     (about an hour per 1e10 on this kind of machine); shorten the run",
+                    self.steps(),
+                    bodies + colliders
+                ),
+            ));
         }
         self.config()?;
         let default_material = self.default_material()?;
@@ -285,10 +398,7 @@ impl Scenario {
             match &b.repeat {
                 None => add(b.name.clone())?,
                 Some(rep) => {
-                    if rep.count == 0 {
-                        return Err(invalid(f("repeat.count"), "must be >= 1"));
-                    }
-                    finite3(&f("repeat.offset"), rep.offset)?;
+                    magnitude3(&f("repeat.offset"), rep.offset)?;
                     // The group name itself is taken too (drivers address the group by it).
                     add(b.name.clone())?;
                     for k in 0..rep.count {
@@ -297,12 +407,21 @@ impl Scenario {
                 }
             }
             groups.insert(&b.name, b.kind);
-            finite3(&f("position"), b.position)?;
-            finite3(&f("rotation_deg"), b.rotation_deg)?;
-            finite3(&f("linvel"), b.linvel)?;
-            finite3(&f("angvel"), b.angvel)?;
+            magnitude3(&f("position"), b.position)?;
+            if let Some(rep) = &b.repeat {
+                // The last copy must be as representable as the first.
+                let last = std::array::from_fn(|k| {
+                    b.position[k] + rep.offset[k] * (rep.count as f64 - 1.0)
+                });
+                magnitude3(&f("repeat.offset"), last)?;
+            }
+            magnitude3(&f("rotation_deg"), b.rotation_deg)?;
+            magnitude3(&f("linvel"), b.linvel)?;
+            magnitude3(&f("angvel"), b.angvel)?;
             non_negative(&f("linear_damping"), b.linear_damping)?;
             non_negative(&f("angular_damping"), b.angular_damping)?;
+            magnitude(&f("linear_damping"), b.linear_damping)?;
+            magnitude(&f("angular_damping"), b.angular_damping)?;
             if b.kind == BodyKind::Dynamic && b.colliders.is_empty() {
                 return Err(invalid(
                     f("collider"),
@@ -362,32 +481,33 @@ impl Scenario {
         match &c.shape {
             ShapeSpec::Cuboid { half_extents } => {
                 for (k, &h) in half_extents.iter().enumerate() {
-                    positive(&format!("{f}.shape.half_extents[{k}]"), h)?;
+                    positive_at_least(&format!("{f}.shape.half_extents[{k}]"), h, MIN_SIZE)?;
                 }
             }
             ShapeSpec::Ball { radius } => {
-                positive(&format!("{f}.shape.radius"), *radius)?;
+                positive_at_least(&format!("{f}.shape.radius"), *radius, MIN_SIZE)?;
             }
             ShapeSpec::Capsule {
                 half_height,
                 radius,
             } => {
-                positive(&format!("{f}.shape.half_height"), *half_height)?;
-                positive(&format!("{f}.shape.radius"), *radius)?;
+                positive_at_least(&format!("{f}.shape.half_height"), *half_height, MIN_SIZE)?;
+                positive_at_least(&format!("{f}.shape.radius"), *radius, MIN_SIZE)?;
             }
         }
-        finite3(&format!("{f}.offset"), c.offset)?;
-        finite3(&format!("{f}.rotation_deg"), c.rotation_deg)?;
+        magnitude3(&format!("{f}.offset"), c.offset)?;
+        magnitude3(&format!("{f}.rotation_deg"), c.rotation_deg)?;
         if c.density.is_some() && c.mass.is_some() {
             return Err(invalid(f, "give either `density` or `mass`, not both"));
         }
         if let Some(d) = c.density {
-            positive(&format!("{f}.density"), d)?;
+            positive_at_least(&format!("{f}.density"), d, MIN_MASS)?;
         }
         if let Some(m) = c.mass {
-            positive(&format!("{f}.mass"), m)?;
+            positive_at_least(&format!("{f}.mass"), m, MIN_MASS)?;
         }
         non_negative(&format!("{f}.friction"), c.friction)?;
+        magnitude(&format!("{f}.friction"), c.friction)?;
         let r = non_negative(&format!("{f}.restitution"), c.restitution)?;
         if r > 1.0 {
             return Err(invalid(
@@ -468,8 +588,8 @@ impl Scenario {
                 ..
             } => {
                 need("velocity", BodyKind::Kinematic)?;
-                finite3(&f("velocity"), *velocity)?;
-                finite3(&f("angular"), *angular)?;
+                magnitude3(&f("velocity"), *velocity)?;
+                magnitude3(&f("angular"), *angular)?;
                 non_negative(&f("start"), *start)?;
             }
             DriverSpec::Spring {
@@ -484,9 +604,11 @@ impl Scenario {
                 need("spring", BodyKind::Dynamic)?;
                 non_negative(&f("stiffness"), *stiffness)?;
                 non_negative(&f("damping"), *damping)?;
-                finite3(&f("anchor_offset"), *anchor_offset)?;
-                finite3(&f("anchor_velocity"), *anchor_velocity)?;
-                finite3(&f("point"), *point)?;
+                magnitude(&f("stiffness"), *stiffness)?;
+                magnitude(&f("damping"), *damping)?;
+                magnitude3(&f("anchor_offset"), *anchor_offset)?;
+                magnitude3(&f("anchor_velocity"), *anchor_velocity)?;
+                magnitude3(&f("point"), *point)?;
                 if let Some(a) = axis {
                     unit(&f("axis"), *a)?;
                 }
@@ -499,9 +621,12 @@ impl Scenario {
             } => {
                 need("force", BodyKind::Dynamic)?;
                 unit(&f("direction"), *direction)?;
+                for (k, knot) in knots.iter().enumerate() {
+                    magnitude(&f(&format!("knots[{k}][1]")), knot[1])?;
+                }
                 profile(&f("knots"), knots)?;
                 if let Some(p) = point {
-                    finite3(&f("point"), *p)?;
+                    magnitude3(&f("point"), *p)?;
                 }
             }
         }

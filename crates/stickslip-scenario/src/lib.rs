@@ -30,6 +30,7 @@
 mod build;
 mod drive;
 mod error;
+pub mod limits;
 mod runner;
 pub mod spec;
 

@@ -1,9 +1,13 @@
 //! Malformed scenario files are rejected with a typed error that names the offending field
 //! (as a dotted path like `body[1].collider[0].density`) and, for anything the TOML parser
 //! sees, the 1-based line of the offending key or value; validation errors (NaN, negative
-//! sizes, unknown references, too-stiff springs) name the field too. Loading or building never
-//! panics, even on every truncation of every shipped scenario.
+//! sizes, unknown references, too-stiff springs) name the field too. Counts, sizes and
+//! magnitudes beyond `stickslip_scenario::limits` (a `repeat.count` of 1e9, 1e9 solver
+//! iterations, runs of 1e18 steps, numbers that overflow or underflow rapier's f32) are
+//! validation errors with field and line, found without allocating by the count. Loading or
+//! building never panics, even on every truncation of every shipped scenario.
 
+use stickslip_scenario::limits::*;
 use stickslip_scenario::{BuildError, Scenario, ScenarioError};
 
 const BASE: &str = r#"name = "t"
@@ -254,4 +258,88 @@ fn no_truncation_of_a_shipped_scenario_panics() {
         }
     }
     assert!(checked > 100, "checked {checked} prefixes");
+}
+
+#[test]
+fn counts_beyond_the_machine_are_refused_before_allocating() {
+    // A billion repeated blocks: refused at once (a name per copy would take tens of GB).
+    let start = std::time::Instant::now();
+    let repeat = |n: u64| {
+        replace_line(
+            18,
+            &format!(
+                "position = [0.0, 0.15, 0.0]\nrepeat = {{ count = {n}, offset = [0.2, 0.0, 0.0] }}"
+            ),
+        )
+    };
+    let e = err(&repeat(1_000_000_000));
+    assert_eq!(e.field(), Some("body[1].repeat.count"));
+    assert_eq!(e.line(), Some(19));
+    assert!(e.to_string().contains(&MAX_BODIES.to_string()), "{e}");
+    assert!(
+        start.elapsed().as_secs() < 10,
+        "validation must not loop over the count"
+    );
+    // Fine one by one, too many together.
+    let many = repeat(60_000);
+    let second =
+        many[many.find("[[body]]\nname = \"block\"").unwrap()..].replace("\"block\"", "\"block2\"");
+    let e = err(&format!("{many}\n{second}"));
+    assert_eq!(e.field(), Some("body[2]"));
+
+    let e = err(&replace_line(
+        3,
+        "dt = 0.01\nsolver_iterations = 1000000000",
+    ));
+    assert_eq!(e.field(), Some("world.solver_iterations"));
+    assert_eq!(e.line(), Some(4));
+    let e = err(&format!("{BASE}[run]\nsteps = 1000000000000000000\n"));
+    assert_eq!(e.field(), Some("run.steps"));
+    // duration/dt beyond u64 must not wrap around into a short run.
+    let e = err(&format!("{BASE}[run]\nduration = 1e300\n"));
+    assert_eq!(e.field(), Some("run.duration"));
+    // Each count fine alone, their product too much work.
+    let e = err(&format!("{}\n[run]\nsteps = 10000000\n", repeat(50_000)));
+    assert_eq!(e.field(), Some("run.steps"));
+    assert!(e.to_string().contains("exceeds"), "{e}");
+    let e = err(&format!("{BASE}[run]\nmax_contact_series = 1000000000\n"));
+    assert_eq!(e.field(), Some("run.max_contact_series"));
+}
+
+#[test]
+fn numbers_beyond_rapiers_f32_are_refused_with_field_and_line() {
+    // (line, replacement, field): overflow in f32, underflow to zero, tiny time steps.
+    let cases = [
+        (18, "position = [1e39, 0.15, 0.0]", "body[1].position[0]"),
+        (18, "position = [0.0, 1e13, 0.0]", "body[1].position[1]"),
+        (21, "density = 1e39", "body[1].collider[0].density"),
+        (21, "density = 1e-50", "body[1].collider[0].density"),
+        (21, "mass = 1e-300", "body[1].collider[0].mass"),
+        (
+            20,
+            "shape = { kind = \"cuboid\", half_extents = [1e-50, 0.05, 0.05] }",
+            "body[1].collider[0].shape.half_extents[0]",
+        ),
+        (
+            20,
+            "shape = { kind = \"ball\", radius = 1e40 }",
+            "body[1].collider[0].shape.radius",
+        ),
+        (3, "dt = 1e-30", "world.dt"),
+        (3, "dt = 100.0", "world.dt"),
+        (
+            2,
+            "[world]\ngravity = [0.0, -1e39, 0.0]",
+            "world.gravity[1]",
+        ),
+    ];
+    for (line, with, field) in cases {
+        let e = err(&replace_line(line, with));
+        assert_eq!(e.field(), Some(field), "{with}");
+        assert!(e.line().is_some(), "{with}: {e}");
+        assert!(e.build_error().is_some(), "{with}: a validation error, {e}");
+    }
+    // The limits themselves are accepted.
+    let ok = replace_line(21, &format!("density = {MAX_MAGNITUDE:e}"));
+    Scenario::from_toml_str(&ok).unwrap();
 }
