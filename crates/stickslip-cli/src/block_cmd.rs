@@ -4,6 +4,7 @@ use crate::{CliError, output};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use stickslip_core::block::{Block, BlockRun, ForceProfile, Integrator, Tolerances, simulate};
+use stickslip_core::error::in_range;
 use stickslip_core::law::{Coulomb, Law, Physical, Regularization, Regularized};
 use stickslip_core::sliding_curve::{Curve, StribeckDecay};
 
@@ -74,23 +75,23 @@ pub struct BlockArgs {
     /// Regularization velocity ġ_t0 of Regul (m/s).
     #[arg(long, default_value_t = 0.01)]
     v_reg: f64,
-    /// Force profile "t0:F0,t1:F1,..." (s:N, piecewise linear). Default: the seed's three
-    /// phases built from --hold and --push.
+    /// Force profile "t0:F0,t1:F1,..." (s:N, piecewise linear, at most 1000 s long). Default:
+    /// the seed's three phases built from --hold and --push.
     #[arg(long, value_name = "T:F,...")]
     force_profile: Option<String>,
-    /// Phase I force as a fraction of F_ba (default profile).
+    /// Phase I force as a fraction of F_ba (default profile), in [0, 1000].
     #[arg(long, default_value_t = 0.95)]
     hold: f64,
-    /// Phase II force as a multiple of F_ba (default profile).
+    /// Phase II force as a multiple of F_ba (default profile), in [0, 1000].
     #[arg(long, default_value_t = 1.5)]
     push: f64,
     /// ODE method.
     #[arg(long, value_enum, default_value = "explicit")]
     integrator: IntegratorName,
-    /// Relative tolerance.
+    /// Relative tolerance, in [1e-14, 0.1].
     #[arg(long, default_value_t = 1e-8)]
     rtol: f64,
-    /// Absolute tolerance.
+    /// Absolute tolerance, in [1e-20, 0.1].
     #[arg(long, default_value_t = 1e-10)]
     atol: f64,
 }
@@ -150,6 +151,8 @@ fn parse_numbers(spec: &str, sep: char) -> Result<Vec<f64>, CliError> {
 }
 
 fn profile(args: &BlockArgs, f_ba: f64) -> Result<ForceProfile, CliError> {
+    in_range("hold", args.hold, 0.0, 1e3)?;
+    in_range("push", args.push, 0.0, 1e3)?;
     match &args.force_profile {
         None => Ok(ForceProfile::example1(f_ba, args.hold, args.push)?),
         Some(spec) => {
@@ -196,10 +199,11 @@ pub fn run(args: &BlockArgs, json: bool) -> Result<(), CliError> {
         IntegratorName::Implicit => Integrator::Implicit,
     };
     let tol = Tolerances {
-        rtol: stickslip_core::error::positive("rtol", args.rtol)?,
-        atol: stickslip_core::error::positive("atol", args.atol)?,
+        rtol: args.rtol,
+        atol: args.atol,
         ..Tolerances::default()
     };
+    tol.validate()?;
     let end = profile.end();
     let ends: Vec<f64> = if args.force_profile.is_none() {
         vec![1.0, 2.0, 3.0]

@@ -103,15 +103,20 @@ pub fn run(args: &RunArgs, json: bool) -> Result<(), CliError> {
         (None, Some(c)) if c.ends_with(".toml") => (Some(PathBuf::from(c)), Some(String::new())),
         (s, c) => (s.clone(), c.clone()),
     };
-    let scenario = match &scenario_path {
+    let mut scenario = match &scenario_path {
         Some(p) => Scenario::from_path(p)?,
         None => Scenario::builtin(),
     };
     if args.every == Some(0) {
         return Err(CliError::Argument("--every must be >= 1".into()));
     }
-    if args.steps == Some(0) {
-        return Err(CliError::Argument("--steps must be >= 1".into()));
+    if let Some(n) = args.steps {
+        // The scenario's own bounds (steps, steps x objects) apply to the override.
+        scenario.run.steps = Some(n);
+        scenario.run.duration = None;
+        scenario
+            .validate()
+            .map_err(|e| CliError::Argument(format!("--steps {n}: {e}")))?;
     }
     if args.check {
         return check(&scenario, json);

@@ -73,7 +73,8 @@ fn parse_waveform(s: &str) -> Result<WaveformKind, String> {
 struct PsiReport {
     waveform: String,
     beta: f64,
-    beta_c: f64,
+    /// β_c, or `None` for waveforms without a critical velocity (square: Ψ > 0 for all β).
+    beta_c: Option<f64>,
     psi: f64,
     psi_closed_form: Option<f64>,
 }
@@ -110,7 +111,7 @@ pub fn run(args: &TheoryArgs, json: bool) -> Result<(), CliError> {
             let r = PsiReport {
                 waveform: waveform.to_string(),
                 beta: *beta,
-                beta_c: w.beta_c(),
+                beta_c: Some(w.beta_c()).filter(|b| b.is_finite()),
                 psi,
                 psi_closed_form: popov::psi_closed_form(&w, *beta),
             };
@@ -120,7 +121,11 @@ pub fn run(args: &TheoryArgs, json: bool) -> Result<(), CliError> {
             let mut rows = vec![
                 ("waveform", r.waveform.clone()),
                 ("beta", format!("{}", r.beta)),
-                ("beta_c", format!("{}", r.beta_c)),
+                (
+                    "beta_c",
+                    r.beta_c
+                        .map_or("none (psi > 0 for every beta)".into(), |b| format!("{b}")),
+                ),
                 ("psi (Eq. 25/31)", format!("{:.6}", r.psi)),
             ];
             if let Some(c) = r.psi_closed_form {

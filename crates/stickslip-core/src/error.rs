@@ -7,7 +7,7 @@ use thiserror::Error;
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ParamError {
     /// A parameter is NaN or infinite.
-    #[error("parameter `{name}` must be finite, got {value}")]
+    #[error("parameter `{name}` must be finite, got {}", num(*value))]
     NotFinite {
         /// Parameter name.
         name: &'static str,
@@ -15,7 +15,7 @@ pub enum ParamError {
         value: f64,
     },
     /// A parameter that must be strictly positive is not.
-    #[error("parameter `{name}` must be > 0, got {value}")]
+    #[error("parameter `{name}` must be > 0, got {}", num(*value))]
     NotPositive {
         /// Parameter name.
         name: &'static str,
@@ -23,7 +23,7 @@ pub enum ParamError {
         value: f64,
     },
     /// A parameter that must be non-negative is negative.
-    #[error("parameter `{name}` must be >= 0, got {value}")]
+    #[error("parameter `{name}` must be >= 0, got {}", num(*value))]
     Negative {
         /// Parameter name.
         name: &'static str,
@@ -31,7 +31,7 @@ pub enum ParamError {
         value: f64,
     },
     /// A parameter lies outside its admissible range.
-    #[error("parameter `{name}` = {value} is outside [{min}, {max}]")]
+    #[error("parameter `{name}` = {} is outside [{}, {}]", num(*value), num(*min), num(*max))]
     OutOfRange {
         /// Parameter name.
         name: &'static str,
@@ -68,6 +68,17 @@ pub enum ParamError {
         /// What is wrong.
         reason: String,
     },
+}
+
+/// A number as people write it: plain in [1e-4, 1e9), in scientific notation outside (so
+/// that 1e300 is not printed with 300 digits).
+pub(crate) fn num(x: f64) -> String {
+    let a = x.abs();
+    if x == 0.0 || !x.is_finite() || (1e-4..1e9).contains(&a) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
 }
 
 /// Checks that `value` is finite.

@@ -30,8 +30,23 @@ fn shipped() -> Vec<(String, String)> {
 }
 
 const HOSTILE: &[&str] = &[
-    "nan", "inf", "-inf", "1e39", "-1e39", "1e300", "-1e300", "0", "-0.0", "1e-320", "1e-45",
-    "4294967296", "1000000000", "-1", "9223372036854775807", "1e13", "0.5",
+    "nan",
+    "inf",
+    "-inf",
+    "1e39",
+    "-1e39",
+    "1e300",
+    "-1e300",
+    "0",
+    "-0.0",
+    "1e-320",
+    "1e-45",
+    "4294967296",
+    "1000000000",
+    "-1",
+    "9223372036854775807",
+    "1e13",
+    "0.5",
 ];
 
 /// Byte ranges of the number tokens of `text` (outside comments).
@@ -45,7 +60,8 @@ fn numbers(text: &str) -> Vec<(usize, usize)> {
         while i < bytes.len() {
             let starts = bytes[i].is_ascii_digit()
                 || (bytes[i] == b'-' && bytes.get(i + 1).is_some_and(u8::is_ascii_digit));
-            let inside_word = i > 0 && (bytes[i - 1].is_ascii_alphanumeric() || bytes[i - 1] == b'_');
+            let inside_word =
+                i > 0 && (bytes[i - 1].is_ascii_alphanumeric() || bytes[i - 1] == b'_');
             if starts && !inside_word {
                 let mut j = i + 1;
                 while j < bytes.len()

@@ -21,7 +21,7 @@ pub use simulate::{
     BeltSpring, BlockRun, Integrator, PhaseSummary, RunStats, SimError, Tolerances, simulate,
 };
 
-use crate::error::{ParamError, positive};
+use crate::error::{ParamError, in_range};
 use crate::law::Law;
 
 /// A block on a horizontal plane: mass, gravity and the friction law at its contact.
@@ -34,10 +34,12 @@ pub struct Block {
 
 impl Block {
     /// Mass (kg) > 0, gravity (m/s²) > 0 and law.
+    /// A block of `mass` (kg, in [1e-9, 1e12]) under `gravity` (m/s², in [1e-9, 1e6]): the
+    /// bounds keep m·g and every force of the run finite.
     pub fn new(mass: f64, gravity: f64, law: Law) -> Result<Self, ParamError> {
         Ok(Block {
-            mass: positive("mass", mass)?,
-            gravity: positive("gravity", gravity)?,
+            mass: in_range("mass", mass, 1e-9, 1e12)?,
+            gravity: in_range("gravity", gravity, 1e-9, 1e6)?,
             law,
         })
     }

@@ -1,6 +1,8 @@
 //! Integrating the block with adaptive methods.
 
 use super::{Block, ForceProfile};
+use crate::ParamError;
+use crate::error::in_range;
 use crate::integrate::solve_with;
 use crate::law::{ElastoPlastic, Law, Regularized};
 use crate::sliding_curve::{Curve, SlidingCurve};
@@ -33,9 +35,25 @@ pub struct Tolerances {
     pub rtol: f64,
     /// Absolute tolerance.
     pub atol: f64,
-    /// Step budget per integrated arc.
+    /// Step budget per integrated arc (and the budget of arcs).
     pub max_steps: usize,
 }
+
+impl Tolerances {
+    /// Checks the values: `rtol` in [1e-14, 0.1] (tighter than f64 can resolve, or so loose
+    /// that the result means nothing, is refused), `atol` in [1e-20, 0.1], `max_steps` in
+    /// [1, 1e8].
+    pub fn validate(&self) -> Result<(), ParamError> {
+        in_range("rtol", self.rtol, 1e-14, 0.1)?;
+        in_range("atol", self.atol, 1e-20, 0.1)?;
+        in_range("max_steps", self.max_steps as f64, 1.0, 1e8)?;
+        Ok(())
+    }
+}
+
+/// The longest simulated time a block run accepts (s): its output is sampled every
+/// millisecond, so this bounds a run's memory to about 32 MB.
+pub const MAX_DURATION: f64 = 1000.0;
 
 impl Default for Tolerances {
     fn default() -> Self {
@@ -53,6 +71,15 @@ pub enum SimError {
     /// The ODE solver gave up (step budget, step size underflow, ...).
     #[error("the ODE solver failed: {0}")]
     Solver(String),
+    /// The tolerances are out of range.
+    #[error("{0}")]
+    Param(#[from] ParamError),
+    /// The run is longer than [`MAX_DURATION`].
+    #[error("the run lasts {duration} s, more than the {MAX_DURATION} s a block run accepts")]
+    TooLong {
+        /// The requested simulated time (s).
+        duration: f64,
+    },
 }
 
 /// Cost of a run.
@@ -146,6 +173,7 @@ pub fn simulate(
     tol: Tolerances,
     phase_ends: &[f64],
 ) -> Result<BlockRun, SimError> {
+    check_run(profile.end(), tol)?;
     let started = Instant::now();
     let mut run = match block.law() {
         Law::ElastoPlastic(l) => elasto_plastic(block, profile, integrator, tol, l)?,
@@ -177,6 +205,15 @@ pub fn simulate(
     run.stick_time = stick;
     run.slip_time = slip;
     Ok(run)
+}
+
+/// Refuses runs whose output or arcs could not be bounded.
+fn check_run(duration: f64, tol: Tolerances) -> Result<(), SimError> {
+    tol.validate()?;
+    if !(duration <= MAX_DURATION) {
+        return Err(SimError::TooLong { duration });
+    }
+    Ok(())
 }
 
 enum Smooth<'a> {
@@ -301,8 +338,16 @@ fn ep_arcs(
 ) -> Result<BlockRun, SimError> {
     let mut run = empty_run();
     let (mut t, mut y) = (0.0, y0);
+    let mut arcs = 0usize;
     // A reset leaves σ = 0, so the next arc cannot end at once on the same event.
     while t < end {
+        arcs += 1;
+        if arcs > tol.max_steps {
+            return Err(SimError::Solver(format!(
+                "more than {} arcs",
+                tol.max_steps
+            )));
+        }
         let sol = solve_with!(
             integrator,
             tol,
@@ -367,6 +412,7 @@ impl BeltSpring {
         integrator: Integrator,
         tol: Tolerances,
     ) -> Result<BlockRun, SimError> {
+        check_run(t_end, tol)?;
         let k = self.stiffness;
         let spring = |_t: f64, x: f64| -k * x;
         let ode = EpOde {
@@ -443,6 +489,7 @@ fn switched(
     let end = profile.end();
     let mut run = empty_run();
     let (mut t, mut x) = (0.0, 0.0);
+    let mut arcs = 0usize;
     let push_rest = |run: &mut BlockRun, from: f64, to: f64, x: f64| {
         // Sticking arc: sample the grid so the output stays uniform.
         let mut s = from;
@@ -455,6 +502,13 @@ fn switched(
         }
     };
     while t < end {
+        arcs += 1;
+        if arcs > tol.max_steps {
+            return Err(SimError::Solver(format!(
+                "more than {} arcs",
+                tol.max_steps
+            )));
+        }
         let Some(start) = profile.first_reaching(t, end, release) else {
             push_rest(&mut run, t, end, x);
             run.t.push(end);

@@ -46,7 +46,7 @@ pub fn beta_from_force(
 
 /// μ̄ = μ0 (1 − α Ψ) (Eq. 33). Valid while contact is never lost, hence α ∈ [0, 1].
 pub fn mu_eff(mu0: f64, alpha: f64, psi: f64) -> Result<f64, ParamError> {
-    non_negative("mu0", mu0)?;
+    in_range("mu0", mu0, 0.0, crate::error::MAX_COEFFICIENT)?;
     in_range("alpha", alpha, 0.0, 1.0)?;
     in_range("psi", psi, 0.0, 1.0)?;
     Ok(mu0 * (1.0 - alpha * psi))

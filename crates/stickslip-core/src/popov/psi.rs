@@ -12,7 +12,7 @@ use std::{num::NonZeroUsize, sync::OnceLock};
 use gauss_quad::GaussLegendre;
 
 use super::numeric::bracketed_root;
-use crate::error::{ParamError, non_negative, positive};
+use crate::error::{ParamError, in_range, positive};
 use crate::waveform::{Breakpoint, Waveform};
 
 /// Sign-scan resolution per period; features of w′ narrower than this may be missed, which
@@ -41,17 +41,24 @@ pub struct StickEvent {
 /// Ψ(0) = 1 (by normalization), Ψ(β) = 0 for β ≥ β_c. Accurate to ~1e-12 except within
 /// ~1e-4 of β_c for smooth waveforms (stick shorter than the scan grid, Ψ below ~1e-8 there).
 pub fn psi(waveform: &Waveform, beta: f64) -> Result<f64, ParamError> {
-    non_negative("beta", beta)?;
+    in_range("beta", beta, 0.0, MAX_BETA)?;
     if beta == 0.0 {
         // The stick line is flat: f ≡ −1, so Ψ = ∫(w + 1) = 1 exactly.
         return Ok(1.0);
     }
-    Ok(events(waveform, beta).iter().map(|e| e.psi).sum())
+    let sum: f64 = events(waveform, beta).iter().map(|e| e.psi).sum();
+    // Ψ ≥ 0: a sum of rounding-level negatives (β at or past β_c) is zero, not −0.
+    Ok(if sum > 0.0 { sum } else { 0.0 })
 }
+
+/// The largest dimensionless velocity β [`psi`] accepts (far past every waveform's β_c, where
+/// Ψ = 0).
+pub const MAX_BETA: f64 = 1e9;
 
 /// The stick events of one period of the steady state, ordered by onset (β > 0).
 pub fn stick_events(waveform: &Waveform, beta: f64) -> Result<Vec<StickEvent>, ParamError> {
     positive("beta", beta)?;
+    in_range("beta", beta, 0.0, MAX_BETA)?;
     Ok(events(waveform, beta))
 }
 

@@ -6,7 +6,10 @@
 
 use super::numeric::periodic_min;
 use super::oscillation::{Excitation, Oscillation};
-use crate::error::{ParamError, non_negative, positive};
+use crate::error::{MAX_COEFFICIENT, ParamError, in_range, positive};
+
+/// The largest amplitude ratio A/F_z the closed forms accept (far past lift-off at 1).
+pub const MAX_AMPLITUDE_RATIO: f64 = 1e3;
 
 /// Samples per period for the Eq. 9 solver; each sampled minimum is then refined.
 const SAMPLES: usize = 8192;
@@ -17,22 +20,22 @@ const LEFT_LIMIT: f64 = 1e-12;
 
 /// μ_s,z = μ0 (1 − A_z/F_z)⁺ under normal oscillation (Eq. 4).
 pub fn mu_s_normal(mu0: f64, amplitude_ratio: f64) -> Result<f64, ParamError> {
-    non_negative("mu0", mu0)?;
-    non_negative("amplitude ratio", amplitude_ratio)?;
+    in_range("mu0", mu0, 0.0, MAX_COEFFICIENT)?;
+    in_range("amplitude ratio", amplitude_ratio, 0.0, MAX_AMPLITUDE_RATIO)?;
     Ok(mu0 * (1.0 - amplitude_ratio).max(0.0))
 }
 
 /// μ_s,x = (μ0 − A_x/F_z)⁺ under tangential oscillation (Eq. 6).
 pub fn mu_s_tangential(mu0: f64, amplitude_ratio: f64) -> Result<f64, ParamError> {
-    non_negative("mu0", mu0)?;
-    non_negative("amplitude ratio", amplitude_ratio)?;
+    in_range("mu0", mu0, 0.0, MAX_COEFFICIENT)?;
+    in_range("amplitude ratio", amplitude_ratio, 0.0, MAX_AMPLITUDE_RATIO)?;
     Ok((mu0 - amplitude_ratio).max(0.0))
 }
 
 /// μ_s,y = √((μ0² − A_y²/F_z²)⁺) under transverse oscillation (Eq. 8).
 pub fn mu_s_transverse(mu0: f64, amplitude_ratio: f64) -> Result<f64, ParamError> {
-    non_negative("mu0", mu0)?;
-    non_negative("amplitude ratio", amplitude_ratio)?;
+    in_range("mu0", mu0, 0.0, MAX_COEFFICIENT)?;
+    in_range("amplitude ratio", amplitude_ratio, 0.0, MAX_AMPLITUDE_RATIO)?;
     Ok((mu0 * mu0 - amplitude_ratio * amplitude_ratio)
         .max(0.0)
         .sqrt())
