@@ -3,8 +3,9 @@
 //! `set_material` and `set_vibration` with a handle that is not in the collider set
 //! (`ColliderHandle::invalid()`, a huge index) are no-ops that allocate nothing; a step with a
 //! NaN, infinite or negative dt leaves the modifier's clock, totals and contact states as they
-//! were; NaN velocities injected into a body never reach the friction state (reports stay
-//! finite) and the contacts of other bodies carry on unchanged; parameters that would
+//! were; NaN, infinite or absurd (f32::MAX) velocities injected into a body never reach the
+//! friction state (its contact is reset and reported with `reset`, every report and total
+//! stays finite) and the contacts of other bodies carry on unchanged; parameters that would
 //! overflow (or underflow) in a step — c·F_n beyond range, force amplitudes of 1e39 N,
 //! sliding curves reaching 1e30 — are refused by the constructors with the parameter's name
 //! and its admissible range.
@@ -101,14 +102,31 @@ fn nan_velocities_never_reach_the_friction_state() {
     for _ in 0..20 {
         m.step(&mut world);
     }
-    world.bodies[boxes[0]].set_linvel(Vector::new(f32::NAN, 0.0, f32::INFINITY), true);
-    for _ in 0..5 {
-        m.step(&mut world);
-        for r in m.reports() {
-            assert!(r.mu.is_finite() && r.limit.is_finite(), "{r:?}");
+    // A finite but absurd velocity first (impulses overflow f32), then NaN and ∞.
+    let mut seen_reset = false;
+    for v in [
+        Vector::new(-f32::MAX, 0.0, 0.0),
+        Vector::new(f32::NAN, 0.0, f32::INFINITY),
+    ] {
+        world.bodies[boxes[0]].set_linvel(v, true);
+        for _ in 0..5 {
+            m.step(&mut world);
+            for r in m.reports() {
+                let numbers = [r.mu, r.limit, r.normal_force, r.dissipated_power];
+                assert!(numbers.iter().all(|x| x.is_finite()), "{r:?}");
+                assert!(r.friction_force.iter().all(|x| x.is_finite()), "{r:?}");
+                assert!(r.slip_velocity.iter().all(|x| x.is_finite()), "{r:?}");
+                seen_reset |= r.reset;
+            }
+            let t = m.totals();
+            assert!(
+                t.dissipated_energy.is_finite() && t.friction_force.is_finite(),
+                "{t:?}"
+            );
         }
-        assert!(m.totals().dissipated_energy.is_finite());
     }
+    // The poisoned contact is reported as reset while it touches the ground.
+    assert!(seen_reset, "a reset contact is reported");
     // The healthy box still rests where it was.
     let p = world.bodies[boxes[1]].translation();
     assert!(p.is_finite() && (p.x - 3.0).abs() < 1e-3, "{p:?}");

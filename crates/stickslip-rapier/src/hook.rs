@@ -46,6 +46,14 @@ fn regime_code(r: Regime) -> u8 {
     }
 }
 
+/// Regime code of a contact whose inputs were not usable this step (see `apply`).
+pub(crate) const REGIME_RESET: u8 = 254;
+
+/// Beyond these a contact's inputs are garbage for an f32 solver, not physics: a force whose
+/// friction share overflows f32, a slip faster than anything rapier integrates meaningfully.
+const MAX_SANE_FORCE: f64 = 1e30;
+const MAX_SANE_SPEED: f64 = 1e15;
+
 fn regime_of(code: u8) -> Regime {
     match code {
         1 => Regime::StickSlip,
@@ -197,6 +205,25 @@ impl<H: PhysicsHooks> StickSlip<H> {
         let speed = vec2::norm(slip);
         let meas = measure(m.manifold, dt);
         let f_n = meas.normal_force;
+        // Non-finite or absurd inputs (a body given a NaN or 1e38 velocity, impulses that
+        // overflowed) never enter the friction state: the contact is reset, held by the
+        // law's static coefficient, and reported as reset.
+        if !(speed <= MAX_SANE_SPEED
+            && f_n.abs() <= MAX_SANE_FORCE
+            && meas.mu.is_finite()
+            && p.is_finite()
+            && slip_w.is_finite())
+        {
+            rec.force = Vector::ZERO;
+            rec.slide = 0.0;
+            rec.anchored = false;
+            rec.mean_normal_force = 0.0;
+            rec.slip_speed = 0.0;
+            rec.regime = REGIME_RESET;
+            *m.friction = law.static_coefficient() as f32;
+            rec.limit = *m.friction;
+            return;
+        }
         // Regul cannot stick: the solver never holds it.
         let regul = matches!(law, Law::Regularized(_));
         let holding;
@@ -450,6 +477,9 @@ pub(crate) fn report(
     _colliders: &ColliderSet,
     dt: f64,
 ) -> ContactReport {
+    if rec.regime == REGIME_RESET {
+        return reset_report(rec);
+    }
     let meas = measure(m, dt);
     let n = m.data.normal;
     let basis = TangentBasis::new(n);
@@ -461,7 +491,7 @@ pub(crate) fn report(
     );
     let friction = basis.tangential(meas.mu) * -(meas.normal_force as f32);
     let f_n = meas.normal_force;
-    ContactReport {
+    let report = ContactReport {
         collider1: rec.c1,
         collider2: rec.c2,
         point: p.to_array(),
@@ -477,5 +507,42 @@ pub(crate) fn report(
         friction_force: friction.to_array(),
         slip_velocity: slip.to_array(),
         dissipated_power: (-(friction.dot(slip)) as f64).max(0.0),
+        reset: false,
+    };
+    // Inputs that turned non-finite after the hook ran (the solve itself overflowed).
+    let numbers = [
+        report.mu,
+        report.limit,
+        report.normal_force,
+        report.dissipated_power,
+    ];
+    let vectors = [
+        report.point,
+        report.normal,
+        report.friction_force,
+        report.slip_velocity,
+    ];
+    if numbers.iter().all(|x| x.is_finite()) && vectors.iter().flatten().all(|x| x.is_finite()) {
+        report
+    } else {
+        reset_report(rec)
+    }
+}
+
+/// The report of a contact whose inputs were not usable: zeros, flagged.
+fn reset_report(rec: &ContactRecord) -> ContactReport {
+    ContactReport {
+        collider1: rec.c1,
+        collider2: rec.c2,
+        point: [0.0; 3],
+        normal: [0.0; 3],
+        regime: Regime::Sticking,
+        mu: 0.0,
+        limit: rec.limit as f64,
+        normal_force: 0.0,
+        friction_force: [0.0; 3],
+        slip_velocity: [0.0; 3],
+        dissipated_power: 0.0,
+        reset: true,
     }
 }

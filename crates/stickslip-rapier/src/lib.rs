@@ -48,7 +48,7 @@ mod tangent;
 mod vibration;
 
 pub use material::FrictionMaterial;
-pub use modifier::{StickSlip, StickSlipConfig};
+pub use modifier::{MAX_DT, MIN_DT, StickSlip, StickSlipConfig, valid_dt};
 pub use report::{ContactReport, WorldTotals};
 pub use vibration::{
     Amplitude, MAX_FORCE, MAX_FREQUENCY, MAX_RATIO, MAX_TANGENTIAL_STIFFNESS, VibrationDirection,

@@ -44,6 +44,20 @@ impl StickSlipConfig {
     }
 }
 
+/// The longest time step (s) the modifier steps: beyond it no contact is resolved, and a
+/// step of 1e30 s only turns every position infinite.
+pub const MAX_DT: f64 = 1.0;
+
+/// The shortest time step (s) the modifier steps: rates like 1/dt stay inside f32 (a
+/// subnormal dt would make them infinite), and 1 ns is far below any time-resolved
+/// vibration's needs.
+pub const MIN_DT: f64 = 1e-9;
+
+/// Whether `dt` is a time step the modifier steps: in [[`MIN_DT`], [`MAX_DT`]].
+pub fn valid_dt(dt: f64) -> bool {
+    (MIN_DT..=MAX_DT).contains(&dt)
+}
+
 /// Step timing the hook needs (rapier does not pass it).
 #[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Clock {
@@ -215,11 +229,12 @@ impl<H: PhysicsHooks> StickSlip<H> {
 
     /// Call before each step with the step's parameters.
     ///
-    /// A step with a non-finite or non-positive `dt` is skipped by the modifier: no contact
-    /// state, clock or total changes (rapier's own step with such a dt is the caller's).
+    /// A step whose `dt` is not a time step ([`valid_dt`]: non-finite, or outside
+    /// [[`MIN_DT`], [`MAX_DT`]]) is skipped by the modifier: no contact state, clock or total changes
+    /// (rapier's own step with such a dt is the caller's; [`Self::step`] skips both).
     pub fn begin_step(&mut self, params: &IntegrationParameters) {
         let dt = params.dt as f64;
-        self.clock.dt = if dt.is_finite() && dt > 0.0 { dt } else { 0.0 };
+        self.clock.dt = if valid_dt(dt) { dt } else { 0.0 };
         self.clock.step = self.clock.step.wrapping_add(1);
     }
 
@@ -252,6 +267,7 @@ impl<H: PhysicsHooks> StickSlip<H> {
                 }
                 let report = crate::hook::report(m, rec, bodies, colliders, dt);
                 totals.contacts += 1;
+                totals.reset += usize::from(report.reset);
                 match report.regime {
                     stickslip_core::law::Regime::Sticking => totals.sticking += 1,
                     stickslip_core::law::Regime::StickSlip => totals.stick_slip += 1,
@@ -276,8 +292,12 @@ impl<H: PhysicsHooks> StickSlip<H> {
         self.step_with_events(world, &());
     }
 
-    /// One step of `world` with this modifier and `events`.
+    /// One step of `world` with this modifier and `events`. A `dt` that is not a time step
+    /// ([`valid_dt`]) skips the step: neither rapier nor the modifier changes anything.
     pub fn step_with_events(&mut self, world: &mut PhysicsWorld, events: &dyn EventHandler) {
+        if !valid_dt(world.integration_parameters.dt as f64) {
+            return;
+        }
         self.begin_step(&world.integration_parameters);
         world.step_with_events(&*self, events);
         self.end_step(&world.narrow_phase, &world.bodies, &world.colliders);

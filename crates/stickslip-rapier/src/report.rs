@@ -31,6 +31,11 @@ pub struct ContactReport {
     pub slip_velocity: [f32; 3],
     /// Power dissipated by friction, −F_f·ġ ≥ 0 (W).
     pub dissipated_power: f64,
+    /// The contact's inputs were not usable this step (non-finite or beyond f32 velocities,
+    /// impulses or positions, e.g. a body given a NaN or 1e38 velocity): its friction state
+    /// was reset, the solver got the law's static coefficient, and every number of this
+    /// report is zero.
+    pub reset: bool,
 }
 
 impl ContactReport {
@@ -64,4 +69,7 @@ pub struct WorldTotals {
     pub dissipated_power: f64,
     /// Energy dissipated since the modifier was created (J).
     pub dissipated_energy: f64,
+    /// Contacts reset this step because their inputs were not usable (see
+    /// [`ContactReport::reset`]); they count as sticking above.
+    pub reset: usize,
 }
