@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Runs stickslip's benchmarks and writes BENCHMARKS.md:
-#   1. criterion benches `benches/step_cost.rs` (step time of the same scenes with plain rapier,
+#   1. criterion benches `benches/benches/step_cost.rs` (package stickslip-benches) (step time of the same scenes with plain rapier,
 #      a no-op hook and stickslip's laws; with STICKSLIP_BENCH_FULL=1 also the ~100k-contact
 #      plane) plus their extra pass (contacts, allocations per step, live heap, interleaved
 #      timings) into $OUT/cost.json;
-#   2. the report binary `examples/bench_report` (accuracy in rapier worlds, the seed's EP
+#   2. the report binary `benches/src/bin/bench_report` (accuracy in rapier worlds, the seed's EP
 #      versus Regul comparison), which reads both and writes the markdown.
 #
 # Usage: scripts/bench_report.sh [--quick] [--out FILE]
@@ -13,7 +13,7 @@
 # Environment: CARGO_TARGET_DIR (default: target/), extra cargo flags in CARGO_FLAGS.
 #
 # CI smoke (compiles and runs every bench and every report measurement once, on tiny sizes):
-#   cargo test --benches --example bench_report
+#   cargo test -p stickslip-benches --benches --bin bench_report
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -38,20 +38,20 @@ rm -rf "$CRITERION_HOME"
 secs() { date +%s; }
 t0=$(secs)
 # shellcheck disable=SC2086
-cargo bench ${CARGO_FLAGS:-} --bench step_cost --no-run
+cargo bench ${CARGO_FLAGS:-} -p stickslip-benches --bench step_cost --no-run
 # shellcheck disable=SC2086
-cargo build ${CARGO_FLAGS:-} --release --example bench_report
+cargo build ${CARGO_FLAGS:-} --release -p stickslip-benches --bin bench_report
 t1=$(secs)
 
 bench_env=(STICKSLIP_BENCH_OUT="$work/cost.json")
 if [[ $full == 1 ]]; then bench_env+=(STICKSLIP_BENCH_FULL=1); fi
 # shellcheck disable=SC2086
-env "${bench_env[@]}" cargo bench ${CARGO_FLAGS:-} --bench step_cost | tee "$work/bench.log"
+env "${bench_env[@]}" cargo bench ${CARGO_FLAGS:-} -p stickslip-benches --bench step_cost | tee "$work/bench.log"
 t2=$(secs)
 
 build_s=$((t1 - t0))
 bench_s=$((t2 - t1))
-"$CARGO_TARGET_DIR/release/examples/bench_report" \
+"$CARGO_TARGET_DIR/release/bench_report" \
     --cost-json "$work/cost.json" \
     --criterion "$CRITERION_HOME" \
     --note "Build (bench + report binaries, incremental): $build_s s; criterion benches and their extra pass: $bench_s s$([[ $full == 1 ]] && echo ', ~100k-contact plane included' || echo ', ~100k-contact plane skipped (--quick)')." \

@@ -19,6 +19,10 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod block;
+/// The seed's many-contact reference (a chain of blocks), used by the benchmarks only: behind
+/// the `reference-chain` feature, outside the default public surface.
+#[cfg(feature = "reference-chain")]
+#[doc(hidden)]
 pub mod chain;
 pub mod error;
 pub mod feeder;

@@ -13,9 +13,10 @@
 //!   ≈40 ms of timed steps per turn, median of rounds; thread CPU time and wall time), which
 //!   cancels drifts of machine load between variants.
 //!
-//! Full run: `STICKSLIP_BENCH_OUT=cost.json cargo bench --bench step_cost` (the report script
+//! Full run: `STICKSLIP_BENCH_OUT=cost.json cargo bench -p stickslip-benches --bench step_cost` (the report script
 //! does this). Smoke run (each bench once, small settle, tiny extra pass):
-//! `cargo test --benches` or `cargo bench --bench step_cost -- --test`.
+//! `cargo test -p stickslip-benches --benches` or `cargo bench -p stickslip-benches --bench
+//! step_cost -- --test`.
 
 mod common;
 

@@ -79,7 +79,7 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
          pairs, so this is the floor of any contact modifier), and by stickslip with each law and \
          with a normal vibration source (ratio 0.3) in either mode on the ground/trough. Every \
          dynamic body has sleeping disabled, so every contact is active every step.\n\n\
-         Two timings of the same binary (`benches/step_cost.rs`), both in **CPU time of the \
+         Two timings of the same binary (`benches/benches/step_cost.rs`), both in **CPU time of the \
          stepping thread** (`CLOCK_THREAD_CPUTIME_ID`; steps are single-threaded, so on an idle \
          machine this is the wall time, and on this shared 2-core machine it leaves out the time \
          the thread waits for a core while other builds run):\n\

@@ -1,4 +1,4 @@
-//! Benchmark scenes shared by `benches/step_cost.rs` and `examples/bench_report`: the same
+//! Benchmark scenes of `benches/step_cost.rs`: the same
 //! rapier world stepped with plain rapier friction, a no-op contact hook, or stickslip with
 //! each law, with and without a vibration source.
 //!
