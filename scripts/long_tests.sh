@@ -12,3 +12,8 @@ echo "property tests: $CASES cases, seed $SEED"
 export PROPTEST_CASES="$CASES" PROPTEST_RNG_SEED="$SEED"
 cargo test --release -p stickslip --test ep_law_properties
 cargo test --release -p stickslip-core --test popov_theory
+# The fuzz suites (nothing crashes, hangs or lies): parameters, running worlds, scenario
+# files, command lines.
+cargo test --release -p stickslip --test fuzz_parameters --test fuzz_world_states
+cargo test --release -p stickslip-scenario --test fuzz_scenarios
+cargo test --release -p stickslip-cli --test cli_fuzz
