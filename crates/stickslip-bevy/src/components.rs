@@ -31,9 +31,10 @@ impl RigidBody {
     }
 }
 
-/// A collision shape: on a `RigidBody` entity, on a child of one (its `Transform` is then the
-/// offset from the body), or alone (a fixed collider where its `Transform`, composed with its
-/// parent's if it has one, puts it). Replacing it changes the rapier shape in place.
+/// A collision shape: on a `RigidBody` entity, on an entity any number of levels below one
+/// (the `Transform`s from the body down to it are then its offset), or below no body (a fixed
+/// collider where the whole hierarchy's `Transform`s put it). Replacing it changes the rapier
+/// shape in place.
 #[derive(Component, Clone)]
 #[require(Transform)]
 pub struct Collider {

@@ -13,7 +13,6 @@ pub(crate) struct ColliderData {
     entity: Entity,
     collider: &'static Collider,
     transform: &'static Transform,
-    parent: Option<&'static ChildOf>,
     friction: Option<&'static Friction>,
     density: Option<&'static Density>,
     mass: Option<&'static ColliderMass>,
@@ -42,8 +41,9 @@ pub(crate) fn create_objects(
     >,
     new_colliders: Query<ColliderData, Without<RapierCollider>>,
     all_colliders: Query<ColliderData>,
-    transforms: Query<&Transform>,
+    hierarchy: (Query<&Transform>, Query<&ChildOf>, Query<&Children>),
 ) {
+    let (transforms, parents, descendants) = hierarchy;
     let w = &mut *w;
     let mut adopted = Vec::new();
     for (entity, kind, transform, velocity, locked, sleepy, (damping, ccd), children) in &bodies {
@@ -63,9 +63,11 @@ pub(crate) fn create_objects(
         commands
             .entity(entity)
             .insert(RapierBody(w.body(entity).unwrap()));
-        // Colliders created before their body (fixed until now) move onto it.
+        // Colliders created before their body (fixed until now, or on an outer body) move
+        // onto it: its own, and those anywhere below it.
         let own = std::iter::once(entity);
-        for e in own.chain(children.into_iter().flatten().copied()) {
+        let below = children.map(|_| descendants.iter_descendants(entity));
+        for e in own.chain(below.into_iter().flatten()) {
             if w.remove_collider(e) {
                 adopted.push(e);
             }
@@ -75,16 +77,40 @@ pub(crate) fn create_objects(
         .iter()
         .chain(all_colliders.iter_many(&adopted))
     {
-        let h = insert_collider(w, &c, &transforms);
+        let h = insert_collider(w, &c, &transforms, &parents);
         // (Re)inserted handles tell the friction layer to attach the collider's law.
         commands.entity(c.entity).insert(RapierCollider(h));
     }
+}
+
+/// The nearest ancestor of `entity` with a rapier body, and `entity`'s pose relative to it
+/// (the `Transform`s composed along the way); `None` with the pose in the world when no
+/// ancestor has a body.
+fn body_ancestor(
+    w: &StickSlipWorld,
+    entity: Entity,
+    transforms: &Query<&Transform>,
+    parents: &Query<&ChildOf>,
+) -> (Option<rp::RigidBodyHandle>, Transform) {
+    let mut pose = transforms.get(entity).copied().unwrap_or_default();
+    let mut at = entity;
+    // Bounded by the hierarchy's depth (bevy forbids cycles).
+    while let Ok(parent) = parents.get(at) {
+        at = parent.parent();
+        if let Some(body) = w.body(at) {
+            return (Some(body), pose);
+        }
+        let step = transforms.get(at).copied().unwrap_or_default();
+        pose = step.mul_transform(pose);
+    }
+    (None, pose)
 }
 
 fn insert_collider(
     w: &mut StickSlipWorld,
     c: &ColliderDataItem,
     transforms: &Query<&Transform>,
+    parents: &Query<&ChildOf>,
 ) -> rp::ColliderHandle {
     let builder = rp::ColliderBuilder::new(c.collider.shape.clone())
         .friction(c.friction.map_or(0.5, |f| f.0))
@@ -94,20 +120,13 @@ fn insert_collider(
         (Some(m), _) => builder.mass(m.0),
         (None, d) => builder.density(d.map_or(1000.0, |d| d.0)),
     };
-    let parent = c.parent.map(ChildOf::parent);
     if let Some(own) = w.body(c.entity) {
         return w.insert_collider(c.entity, builder, Some(own));
     }
-    if let Some(body) = parent.and_then(|p| w.body(p)) {
-        // A child: its Transform is the offset from the body.
-        return w.insert_collider(c.entity, builder.position(pose_of(c.transform)), Some(body));
-    }
-    // Fixed, where the hierarchy puts it (one level: the parent's Transform).
-    let at = match parent.and_then(|p| transforms.get(p).ok()) {
-        Some(p) => p.mul_transform(*c.transform),
-        None => *c.transform,
-    };
-    w.insert_collider(c.entity, builder.position(pose_of(&at)), None)
+    // Below a body at any depth: the Transforms down from the body are the offset; below no
+    // body: a fixed collider where the whole hierarchy puts it.
+    let (body, pose) = body_ancestor(w, c.entity, transforms, parents);
+    w.insert_collider(c.entity, builder.position(pose_of(&pose)), body)
 }
 
 /// Applies changed body kinds, damping, shapes and collider materials to existing rapier

@@ -4,7 +4,9 @@
 //! with it; a `SurfaceVelocity` belt brings a part to the belt's speed; `Transform` and
 //! `Velocity` set by the user (teleports, kicks) reach rapier; an `ExternalForce` accelerates
 //! a free body at F/m and stops when removed; a body added to an entity with a (so far
-//! fixed) collider takes the collider over; `ColliderMass` sets the mass, `Damping` slows a
+//! fixed) collider takes the collider over; colliders any number of levels below a body
+//! join it at the composed offset (and below no body sit fixed where the whole hierarchy
+//! puts them), also when the body arrives after them; `ColliderMass` sets the mass, `Damping` slows a
 //! free body by rapier's implicit factor 1/(1 + c·dt) per step (≈ e^(−c·t)), `Restitution`
 //! makes a ball bounce back to e²·h, and changing them on a live body takes effect.
 
@@ -305,5 +307,79 @@ fn restitution_bounces_a_ball_back() {
     assert!(
         (top - expected).abs() < 0.05 * expected,
         "bounce height {top} m vs e²h = {expected} m"
+    );
+}
+
+#[test]
+fn colliders_deeper_in_the_hierarchy_join_their_body() {
+    use stickslip_bevy::convert::to_bevy;
+    let mut app = app();
+    zero_gravity(&mut app);
+    // body ─ arm (no collider, shifted and turned 90° about z) ─ collider 0.5 m along the
+    // arm's x: the collider sits at body + (0.3, 0, 0) + R_z(90°)·(0.5, 0, 0) = (0.3, 0.5, 0).
+    let arm = Transform::from_xyz(0.3, 0.0, 0.0)
+        .with_rotation(Quat::from_rotation_z(std::f32::consts::FRAC_PI_2));
+    let mut grandchild = Entity::PLACEHOLDER;
+    let body = app
+        .world_mut()
+        .spawn((RigidBody::Dynamic, Transform::from_xyz(1.0, 2.0, 3.0)))
+        .with_children(|p| {
+            p.spawn(arm).with_children(|q| {
+                grandchild = q
+                    .spawn((Collider::ball(0.1), Transform::from_xyz(0.5, 0.0, 0.0)))
+                    .id();
+            });
+        })
+        .id();
+    steps(&mut app, 1);
+    let w = app.world().resource::<StickSlipWorld>();
+    let h = w
+        .collider(grandchild)
+        .expect("the grandchild has a collider");
+    let c = &w.physics.colliders[h];
+    assert_eq!(
+        c.parent(),
+        w.body(body),
+        "attached to the body two levels up"
+    );
+    let offset = to_bevy(c.position_wrt_parent().unwrap().translation);
+    assert!(
+        (offset - Vec3::new(0.3, 0.5, 0.0)).length() < 1e-6,
+        "{offset}"
+    );
+    let world_at = to_bevy(c.position().translation);
+    assert!(
+        (world_at - Vec3::new(1.3, 2.5, 3.0)).length() < 1e-5,
+        "{world_at}"
+    );
+
+    // The same hierarchy under no body: fixed where the hierarchy puts it; then a body
+    // added at the root takes it over.
+    let root = app
+        .world_mut()
+        .spawn(Transform::from_xyz(-1.0, 0.0, 0.0))
+        .with_children(|p| {
+            p.spawn(arm).with_children(|q| {
+                grandchild = q
+                    .spawn((Collider::ball(0.1), Transform::from_xyz(0.5, 0.0, 0.0)))
+                    .id();
+            });
+        })
+        .id();
+    steps(&mut app, 1);
+    let w = app.world().resource::<StickSlipWorld>();
+    let c = &w.physics.colliders[w.collider(grandchild).unwrap()];
+    assert!(c.parent().is_none(), "fixed");
+    let at = to_bevy(c.position().translation);
+    assert!((at - Vec3::new(-0.7, 0.5, 0.0)).length() < 1e-6, "{at}");
+    app.world_mut().entity_mut(root).insert(RigidBody::Dynamic);
+    steps(&mut app, 1);
+    let w = app.world().resource::<StickSlipWorld>();
+    let c = &w.physics.colliders[w.collider(grandchild).unwrap()];
+    assert_eq!(c.parent(), w.body(root), "taken over by the new body");
+    let offset = to_bevy(c.position_wrt_parent().unwrap().translation);
+    assert!(
+        (offset - Vec3::new(0.3, 0.5, 0.0)).length() < 1e-6,
+        "{offset}"
     );
 }
