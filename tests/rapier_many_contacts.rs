@@ -5,7 +5,9 @@
 //! back; storage bounded by the peak), boxes
 //! loaded below break-away do not move beyond g_ba while their neighbours slide, nothing
 //! becomes NaN or blows up, and a contact that re-forms after its box was lifted starts
-//! from a fresh sticking state instead of reusing the old sliding one.
+//! from a fresh sticking state instead of reusing the old sliding one. Pairs that rapier
+//! holds a manifold for without any solver contact (neighbours inside the prediction
+//! distance, not touching) keep no state at all.
 
 use rapier3d::prelude::*;
 use stickslip::core::law::{Law, Regime};
@@ -181,4 +183,47 @@ fn a_reformed_contact_starts_fresh() {
     let fresh = modifier.reports()[0];
     assert_eq!(fresh.regime, Regime::Sticking);
     assert!(fresh.mu < 0.05, "re-formed contact carries {}", fresh.mu);
+}
+
+#[test]
+fn near_misses_keep_no_state() {
+    // 50 boxes under stickslip, 5 cm apart: every neighbour pair is a manifold in rapier's
+    // narrow phase (inside the broad phase's margin) without any solver contact (beyond the
+    // prediction distance); only the box–ground contacts touch.
+    const GAP: f32 = 0.05;
+    let mut world = PhysicsWorld::default();
+    let ground = world.insert_collider(ColliderBuilder::cuboid(100.0, 0.1, 5.0), None);
+    let law = Law::elasto_plastic(C, MU_BA, MU_MAX, Curve::constant(MU_MAX).unwrap()).unwrap();
+    let mut modifier = StickSlip::new(FrictionMaterial::new(law));
+    modifier.attach(&mut world.colliders, ground, None);
+    let half = 0.1;
+    for i in 0..50 {
+        let (_, c) = world.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(Vector::new(i as f32 * (2.0 * half + GAP), 0.1 + half, 0.0))
+                .can_sleep(false),
+            ColliderBuilder::cuboid(half, half, half),
+        );
+        modifier.attach(&mut world.colliders, c, None);
+    }
+    for _ in 0..30 {
+        modifier.step(&mut world);
+    }
+    let (mut touching, mut near) = (0, 0);
+    for pair in world.narrow_phase.contact_pairs() {
+        for m in pair.manifolds() {
+            if m.data.solver_contacts.is_empty() {
+                near += 1;
+            } else {
+                touching += 1;
+            }
+        }
+    }
+    assert!(near >= 40, "the scene has near misses: {near}");
+    assert_eq!(touching, 50, "every box on the ground");
+    assert_eq!(
+        modifier.active_contacts(),
+        touching,
+        "states only for touching contacts"
+    );
 }

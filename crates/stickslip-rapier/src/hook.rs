@@ -158,6 +158,25 @@ impl<H: PhysicsHooks> PhysicsHooks for StickSlip<H> {
             self.inner.modify_solver_contacts(ctx);
             return;
         };
+        // A manifold without solver contacts and without a record (a pair inside the
+        // prediction distance, not touching) has nothing for the law: no record is made
+        // unless the wrapped hook keeps a value in its user_data.
+        if rigid.solver_contacts.is_empty() && *rigid.user_data == 0 {
+            self.inner.modify_solver_contacts(ctx);
+            let Some(r) = ctx.rigid_mut() else { return };
+            let inner_data = *r.user_data;
+            if inner_data == 0 {
+                return;
+            }
+            let key = key(c1, c2, r.manifold);
+            let mut user_data = 0;
+            self.store
+                .with_record(&mut user_data, &key, self.clock.step, |rec, _, ours| {
+                    rec.inner_user_data = inner_data;
+                    *r.user_data = ours;
+                });
+            return;
+        }
         let key = key(c1, c2, rigid.manifold);
         let mut user_data = *rigid.user_data;
         let step = self.clock.step;
