@@ -28,4 +28,4 @@ install_rerun_cli() {
 install_rerun_cli
 
 cargo test --workspace
-cargo test -p stickslip --features parallel --test rapier_many_contacts --test rapier_popov
+cargo test -p stickslip --features parallel --test rapier_many_contacts --test rapier_popov --test rapier_snapshot

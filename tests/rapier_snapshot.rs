@@ -629,3 +629,126 @@ fn closure_waveforms_snapshot_in_memory_but_not_to_a_file() {
     let err = WorldSnapshot::save_from(&s.world, &m, Vec::new()).unwrap_err();
     assert!(matches!(err, SnapshotError::Encode(_)), "{err}");
 }
+
+/// Hundreds of contacts, so that with rapier's `parallel` feature the hook runs on several
+/// threads (rapier hands pairs to its workers in blocks of 64) and new contacts take their
+/// slots in whatever order the threads reach them: the resumed run must still be identical.
+#[test]
+fn hundreds_of_contacts_resume_bit_identically() {
+    const ROWS: usize = 14;
+    let build = || {
+        let mut world = PhysicsWorld::default();
+        let ground = world.insert_collider(ColliderBuilder::cuboid(4.0, 0.1, 4.0), None);
+        let floor = world.insert_collider(
+            ColliderBuilder::cuboid(60.0, 0.1, 60.0).translation(Vector::new(0.0, -3.0, 0.0)),
+            None,
+        );
+        let mut bodies = Vec::new();
+        for i in 0..ROWS * ROWS {
+            let (x, z) = ((i % ROWS) as f32, (i / ROWS) as f32);
+            let (b, _) = world.insert(
+                RigidBodyBuilder::dynamic()
+                    .translation(Vector::new(
+                        -3.6 + 0.55 * x,
+                        0.26 + 0.02 * z,
+                        -3.6 + 0.55 * z,
+                    ))
+                    .can_sleep(i % 5 == 0),
+                ColliderBuilder::cuboid(0.15, 0.15, 0.15).density(800.0),
+            );
+            bodies.push(b);
+        }
+        (world, ground, floor, bodies)
+    };
+    let (mut world, ground, floor, bodies) = build();
+    let threads = ThreadsSeen::default();
+    let mut m = StickSlip::with_hooks(FrictionMaterial::new(law(Kind::Ep)), threads.clone());
+    m.attach(&mut world.colliders, ground, None);
+    m.attach(&mut world.colliders, floor, None);
+    let source = VibrationSource::new(
+        VibrationDirection::Normal,
+        Amplitude::Ratio(0.3),
+        3.0,
+        Waveform::SawtoothRight,
+        0.0,
+        VibrationMode::TimeResolved,
+    )
+    .unwrap();
+    m.set_vibration(ground, source);
+    let push = |world: &mut PhysicsWorld, k: usize| {
+        for (i, b) in bodies.iter().enumerate() {
+            let body = &mut world.bodies[*b];
+            let mass = body.mass();
+            let phase = k as f32 * 0.03 + i as f32 * 0.37;
+            // Drifting outward (edge boxes slide off), with hops.
+            let out = if i % ROWS < ROWS / 2 { -0.12 } else { 0.12 };
+            let fx = mass * 9.81 * (out + 0.52 * phase.sin());
+            let lift = if (k + 7 * i) % 250 < 10 { 14.0 } else { 0.0 };
+            body.reset_forces(false);
+            body.add_force(Vector::new(fx, mass * lift, 0.3 * fx), true);
+        }
+    };
+    let bits = |world: &PhysicsWorld, m: &StickSlip<ThreadsSeen>| {
+        let mut out = Vec::new();
+        for b in &bodies {
+            let b = &world.bodies[*b];
+            let p = b.position();
+            for v in [p.translation.to_array(), b.linvel().to_array()] {
+                out.extend(v.map(|x| x.to_bits() as u64));
+            }
+            out.extend(p.rotation.to_array().map(|x| x.to_bits() as u64));
+        }
+        for r in m.reports() {
+            out.extend(report_bits(r));
+        }
+        out.extend(totals_bits(&m.totals()));
+        out
+    };
+    for k in 0..200 {
+        push(&mut world, k);
+        m.step(&mut world);
+    }
+    let at_snapshot = m.active_contacts();
+    assert!(at_snapshot >= 150, "{at_snapshot} contacts");
+    let mut bytes = Vec::new();
+    WorldSnapshot::save_from(&world, &m, &mut bytes).unwrap();
+    let (mut w2, mut m2) = WorldSnapshot::load(bytes.as_slice())
+        .unwrap()
+        .restore(threads.clone())
+        .unwrap();
+    let capacity = m.state_capacity();
+    let (mut lo, mut hi) = (usize::MAX, 0);
+    for k in 200..200 + AFTER {
+        push(&mut world, k);
+        push(&mut w2, k);
+        m.step(&mut world);
+        m2.step(&mut w2);
+        assert!(bits(&world, &m) == bits(&w2, &m2), "differs at step {k}");
+        lo = lo.min(m.reports().len());
+        hi = hi.max(m.reports().len());
+    }
+    assert!(lo < hi && m.state_capacity() > capacity, "{lo}..{hi}");
+    let n_threads = threads.0.lock().unwrap().len();
+    eprintln!(
+        "{at_snapshot} contacts at the snapshot ({} bytes), {lo}..{hi} reported after, \
+         slots {capacity} -> {}, hook ran on {n_threads} thread(s): identical over {AFTER} steps",
+        bytes.len(),
+        m.state_capacity()
+    );
+    #[cfg(feature = "parallel")]
+    assert!(n_threads >= 2, "the hook ran on {n_threads} thread(s)");
+}
+
+/// Inner hooks recording the threads the contact hook runs on.
+#[derive(Clone, Default)]
+struct ThreadsSeen(
+    std::sync::Arc<std::sync::Mutex<std::collections::HashSet<std::thread::ThreadId>>>,
+);
+
+impl PhysicsHooks for ThreadsSeen {
+    fn modify_solver_contacts(&self, _: &mut ContactModificationContext) {
+        if let Ok(mut seen) = self.0.lock() {
+            seen.insert(std::thread::current().id());
+        }
+    }
+}
