@@ -478,6 +478,9 @@ fn garbage_truncated_and_mutated_bytes_are_errors_not_panics() {
     assert!(errors > 0);
 }
 
+/// An edit of a snapshot's JSON form.
+type Edit = Box<dyn FnOnce(&mut serde_json::Value)>;
+
 /// The modifier's snapshot as JSON, edited by `edit`, and restored against `colliders`.
 fn restore_edited(
     snapshot: &StickSlipSnapshot,
@@ -507,7 +510,7 @@ fn inconsistent_snapshot_data_is_rejected() {
         .unwrap()
         .len();
     let live_slot = serde_json::to_value(&snap).unwrap()["contacts"]["keys"][0]["slot"].clone();
-    let cases: Vec<(&str, Box<dyn FnOnce(&mut serde_json::Value)>)> = vec![
+    let cases: Vec<(&str, Edit)> = vec![
         (
             "free list",
             Box::new(move |j| j["contacts"]["free"][0] = nslots.into()),

@@ -517,7 +517,7 @@ impl From<&ContactReport> for ReportSnapshot {
 }
 
 impl ReportSnapshot {
-    fn to_report(&self) -> Result<ContactReport, SnapshotError> {
+    fn to_report(self) -> Result<ContactReport, SnapshotError> {
         let finite = self
             .point
             .iter()
@@ -731,7 +731,7 @@ impl<H> StickSlip<H> {
         let reports = s
             .reports
             .iter()
-            .map(ReportSnapshot::to_report)
+            .map(|r| r.to_report())
             .collect::<Result<Vec<_>, _>>()?;
         Ok(StickSlip {
             config: s.config,
