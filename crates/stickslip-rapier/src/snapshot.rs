@@ -80,8 +80,10 @@ use stickslip_core::waveform::Waveform;
 pub const FORMAT_VERSION: u32 = 1;
 
 const MAGIC: [u8; 8] = *b"STKSLIP\0";
-const KIND_MODIFIER: u8 = 0;
-const KIND_WORLD: u8 = 1;
+/// Header kind of a [`StickSlipSnapshot`] file.
+pub const KIND_MODIFIER: u8 = 0;
+/// Header kind of a [`WorldSnapshot`] file.
+pub const KIND_WORLD: u8 = 1;
 
 /// Why a snapshot could not be written, read or restored.
 #[derive(Debug, thiserror::Error)]
@@ -101,13 +103,14 @@ pub enum SnapshotError {
         /// Version this build reads.
         supported: u32,
     },
-    /// The file holds another kind of snapshot (modifier only vs world and modifier).
-    #[error("the file holds a {found} snapshot, not a {expected} snapshot")]
+    /// The file holds another kind of snapshot (header byte 12: 0 modifier only, 1 world
+    /// and modifier, others for bundles written with [`save_value`]).
+    #[error("the file holds a snapshot of kind {found}, not of kind {expected}")]
     WrongKind {
-        /// What the file holds.
-        found: &'static str,
-        /// What was asked for.
-        expected: &'static str,
+        /// Kind in the file.
+        found: u8,
+        /// Kind asked for.
+        expected: u8,
     },
     /// The state cannot be encoded (e.g. a closure waveform).
     #[error("could not encode the snapshot: {0}")]
@@ -805,12 +808,25 @@ impl WorldSnapshot {
     }
 }
 
-fn kind_name(kind: u8) -> &'static str {
-    match kind {
-        KIND_MODIFIER => "modifier-only",
-        KIND_WORLD => "world",
-        _ => "unknown",
-    }
+/// Writes `value` in the snapshot format with header kind `kind`: for bundles of your own
+/// around a world and a [`StickSlipSnapshot`] (e.g. a runner's counters beside them). Kinds
+/// [`KIND_MODIFIER`] and [`KIND_WORLD`] are this module's; pick another one.
+pub fn save_value<T: Serialize, W: Write>(
+    writer: W,
+    kind: u8,
+    value: &T,
+) -> Result<(), SnapshotError> {
+    write_framed(writer, kind, value)
+}
+
+/// Reads a value written by [`save_value`] with the same `kind` (header checked, decoding
+/// errors and panics inside deserializers returned as errors, trailing bytes rejected).
+/// Validate what you read: [`StickSlip::restore`] does for the modifier's part.
+pub fn load_value<T: serde::de::DeserializeOwned, R: Read>(
+    reader: R,
+    kind: u8,
+) -> Result<T, SnapshotError> {
+    read_framed(reader, kind)
 }
 
 fn write_framed<T: Serialize, W: Write>(
@@ -852,8 +868,8 @@ fn read_framed<T: serde::de::DeserializeOwned, R: Read>(
     }
     if header[12] != kind {
         return Err(SnapshotError::WrongKind {
-            found: kind_name(header[12]),
-            expected: kind_name(kind),
+            found: header[12],
+            expected: kind,
         });
     }
     // rapier's and serde's deserializers are not ours: a panic inside one is a decode error.
