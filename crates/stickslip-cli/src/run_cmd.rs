@@ -44,6 +44,14 @@ pub struct RunArgs {
     /// Only parse and validate the scenario, then print what it contains.
     #[arg(long)]
     check: bool,
+    /// After the run, write a snapshot of it (world, friction state, statistics) to FILE;
+    /// `--resume FILE` continues from it bit-identically.
+    #[arg(long, value_name = "FILE")]
+    snapshot_out: Option<PathBuf>,
+    /// Continue the run saved with `--snapshot-out` (same scenario file) instead of starting
+    /// at step 0; `--steps` counts the further steps (default: the scenario's remaining ones).
+    #[arg(long, value_name = "FILE")]
+    resume: Option<PathBuf>,
 }
 
 /// The JSON document `--json` prints.
@@ -123,8 +131,17 @@ pub fn run(args: &RunArgs, json: bool) -> Result<(), CliError> {
     }
 
     let scene = scenario.build()?;
-    let steps = args.steps.unwrap_or(scene.steps);
-    let every = args.every.unwrap_or(scene.log_every);
+    let (scenario_steps, every) = (scene.steps, args.every.unwrap_or(scene.log_every));
+    let runner = match &args.resume {
+        Some(path) => {
+            let file = std::fs::File::open(path).map_err(|e| snapshot_error(path, e))?;
+            Runner::resume(scene, file).map_err(|e| snapshot_error(path, e))?
+        }
+        None => Runner::new(scene),
+    };
+    let steps = args
+        .steps
+        .unwrap_or(scenario_steps.saturating_sub(runner.steps_done()));
 
     let mut sinks = Vec::new();
     let pending = args.rrd.as_deref().map(PendingRrd::new);
@@ -134,7 +151,7 @@ pub fn run(args: &RunArgs, json: bool) -> Result<(), CliError> {
     if let Some(addr) = &connect {
         sinks.push(Sink::Grpc((!addr.is_empty()).then(|| addr.clone())));
     }
-    let result = simulate(scene, steps, every, &sinks, json).map_err(|e| match (e, &connect) {
+    let result = simulate(runner, steps, every, &sinks, json).map_err(|e| match (e, &connect) {
         (CliError::Rerun(stickslip_rerun::LogError::Flush(msg)), Some(addr)) => {
             let url = stickslip_rerun::grpc_url((!addr.is_empty()).then_some(addr.as_str()));
             CliError::Rerun(stickslip_rerun::LogError::Flush(format!(
@@ -143,7 +160,7 @@ pub fn run(args: &RunArgs, json: bool) -> Result<(), CliError> {
         }
         (e, _) => e,
     });
-    let (summary, logged, wall) = match result {
+    let (summary, logged, wall, runner) = match result {
         Ok(r) => r,
         Err(e) => {
             if let Some(p) = pending {
@@ -152,6 +169,9 @@ pub fn run(args: &RunArgs, json: bool) -> Result<(), CliError> {
             return Err(e);
         }
     };
+    if let Some(path) = &args.snapshot_out {
+        write_snapshot(&runner, path)?;
+    }
     let rrd = match pending {
         Some(p) => {
             let target = p.target.display().to_string();
@@ -177,12 +197,13 @@ pub fn run(args: &RunArgs, json: bool) -> Result<(), CliError> {
 /// Steps the scene, logging to `sinks`; returns the summary, the steps logged and the wall time.
 /// The recording stream is flushed and dropped (which finalizes an `.rrd`) before returning.
 fn simulate(
-    scene: stickslip_scenario::Scene,
+    mut runner: Runner,
     steps: u64,
     every: u64,
     sinks: &[Sink],
     json: bool,
-) -> Result<(Summary, u64, f64), CliError> {
+) -> Result<(Summary, u64, f64, Runner), CliError> {
+    let scene = runner.scene();
     let mut logger = if sinks.is_empty() {
         None
     } else {
@@ -200,21 +221,22 @@ fn simulate(
         }
         Some(logger)
     };
-    let mut runner = Runner::new(scene);
     let bar = progress_bar(steps, json);
     let started = Instant::now();
+    // A resumed run logs on from the saved step number.
+    let base = runner.steps_done();
     if let Some(l) = logger.as_mut() {
         let s = runner.scene();
-        l.log_step_always(0, &s.world, &s.stickslip)?;
+        l.log_step_always(base, &s.world, &s.stickslip)?;
     }
     for k in 1..=steps {
         runner.step();
         if let Some(l) = logger.as_mut() {
             let s = runner.scene();
             if k == steps {
-                l.log_step_always(k, &s.world, &s.stickslip)?;
+                l.log_step_always(base + k, &s.world, &s.stickslip)?;
             } else {
-                l.log_step(k, &s.world, &s.stickslip)?;
+                l.log_step(base + k, &s.world, &s.stickslip)?;
             }
         }
         if k % 64 == 0 {
@@ -228,7 +250,27 @@ fn simulate(
     }
     bar.finish_and_clear();
     let wall = started.elapsed().as_secs_f64();
-    Ok((runner.summary(), logged, wall))
+    Ok((runner.summary(), logged, wall, runner))
+}
+
+fn snapshot_error(path: &Path, e: impl std::fmt::Display) -> CliError {
+    CliError::Io(format!("snapshot {}: {e}", path.display()))
+}
+
+/// Writes the snapshot beside `path` first and renames it, so a failed write never leaves a
+/// partial file under the name asked for.
+fn write_snapshot(runner: &Runner, path: &Path) -> Result<(), CliError> {
+    let pending = PendingRrd::new(path);
+    let written = std::fs::File::create(&pending.tmp)
+        .map_err(|e| snapshot_error(path, e))
+        .and_then(|f| runner.save_snapshot(f).map_err(|e| snapshot_error(path, e)));
+    match written {
+        Ok(()) => pending.commit(),
+        Err(e) => {
+            pending.abandon();
+            Err(e)
+        }
+    }
 }
 
 fn progress_bar(steps: u64, json: bool) -> ProgressBar {

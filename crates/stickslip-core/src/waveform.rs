@@ -204,6 +204,28 @@ impl Waveform {
         Ok(Self::Table(TableWaveform { samples }))
     }
 
+    /// A table waveform from samples that are already normalized (as
+    /// [`TableWaveform::samples`] returns them), kept bit for bit: re-normalizing them with
+    /// [`Waveform::from_table`] could move them by an ulp, so a saved and restored waveform
+    /// would not reproduce the original exactly. The samples are checked like
+    /// [`Waveform::from_table`]'s, and must have zero mean and minimum −1 to within 1e-9.
+    pub fn from_normalized_table(samples: &[f64]) -> Result<Self, ParamError> {
+        let bad = |reason: &str| ParamError::BadTable {
+            name: "normalized waveform table",
+            reason: reason.to_owned(),
+        };
+        // Validates length, finiteness and non-constancy.
+        Self::from_table(samples)?;
+        let mean = samples.iter().sum::<f64>() / samples.len() as f64;
+        let min = samples.iter().copied().fold(f64::INFINITY, f64::min);
+        if !(mean.abs() <= 1e-9 && (min + 1.0).abs() <= 1e-9) {
+            return Err(bad("samples are not normalized (zero mean, minimum -1)"));
+        }
+        Ok(Self::Table(TableWaveform {
+            samples: samples.into(),
+        }))
+    }
+
     /// Waveform from a closure `f(φ)` on [0, 1), normalized numerically (mean by the
     /// periodic rectangle rule on 4096 points, minimum by golden-section refinement).
     ///
@@ -573,6 +595,20 @@ mod tests {
         assert!(Waveform::from_fn(|_| 2.0).is_err());
         assert!(Waveform::from_fn(|x| x).is_err(), "a ramp is not periodic");
         assert!(Waveform::from_fn(|x| if x > 0.5 { f64::NAN } else { 0.0 }).is_err());
+    }
+
+    #[test]
+    fn normalized_table_round_trips_bit_for_bit() {
+        let w = Waveform::from_table(&[0.1, 3.7, 1.3, 2.9, 0.7]).unwrap();
+        let Waveform::Table(t) = &w else { panic!() };
+        let again = Waveform::from_normalized_table(t.samples()).unwrap();
+        let Waveform::Table(t2) = &again else {
+            panic!()
+        };
+        let bits = |s: &[f64]| s.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(t.samples()), bits(t2.samples()));
+        assert!(Waveform::from_normalized_table(&[0.0, 3.0, 1.0, 2.0]).is_err());
+        assert!(Waveform::from_normalized_table(&[-1.0, f64::NAN]).is_err());
     }
 
     #[test]

@@ -52,4 +52,12 @@ impl<T> ColliderMap<T> {
             _ => None,
         }
     }
+
+    /// The entries, by increasing arena index.
+    pub fn iter(&self) -> impl Iterator<Item = (ColliderHandle, &T)> {
+        self.slots.iter().enumerate().filter_map(|(i, s)| {
+            s.as_ref()
+                .map(|(g, v)| (ColliderHandle::from_raw_parts(i as u32, *g), v))
+        })
+    }
 }

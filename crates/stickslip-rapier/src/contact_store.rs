@@ -55,7 +55,7 @@ pub(crate) struct ContactRecord {
 }
 
 impl ContactRecord {
-    fn new(key: &ContactKey) -> Self {
+    pub(crate) fn new(key: &ContactKey) -> Self {
         ContactRecord {
             c1: key.c1,
             c2: key.c2,
@@ -75,21 +75,21 @@ impl ContactRecord {
 }
 
 #[derive(Debug)]
-struct Slot {
-    generation: u8,
-    live: bool,
-    record: ContactRecord,
+pub(crate) struct Slot {
+    pub generation: u8,
+    pub live: bool,
+    pub record: ContactRecord,
 }
 
 /// Slab of contact records.
 #[derive(Debug, Default)]
 pub(crate) struct ContactStore {
-    slots: RwLock<Vec<Mutex<Slot>>>,
-    by_key: Mutex<HashMap<ContactKey, u32>>,
-    free: Mutex<Vec<u32>>,
+    pub(crate) slots: RwLock<Vec<Mutex<Slot>>>,
+    pub(crate) by_key: Mutex<HashMap<ContactKey, u32>>,
+    pub(crate) free: Mutex<Vec<u32>>,
 }
 
-const INDEX_BITS: u32 = 24;
+pub(crate) const INDEX_BITS: u32 = 24;
 const INDEX_MASK: u32 = (1 << INDEX_BITS) - 1;
 
 fn encode(index: u32, generation: u8) -> u32 {
@@ -101,7 +101,7 @@ fn decode(user_data: u32) -> Option<(u32, u8)> {
     (i != 0).then(|| (i - 1, (user_data >> INDEX_BITS) as u8))
 }
 
-fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
+pub(crate) fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
     // A panic elsewhere must not turn every later step into a panic: take the data anyway.
     m.lock().unwrap_or_else(|e| e.into_inner())
 }

@@ -31,6 +31,8 @@
 //! # let _ = (body, cube);
 //! ```
 //!
+//! Save and resume a world with [`WorldSnapshot`] (see [`snapshot`]).
+//!
 //! See [`hook`](crate) docs in the source (`hook.rs`) for how the law maps onto rapier's
 //! per-manifold friction, and [`VibrationSource`] for vibration.
 #![warn(missing_docs)]
@@ -44,12 +46,14 @@ mod material;
 mod modifier;
 mod report;
 pub mod scenes;
+pub mod snapshot;
 mod tangent;
 mod vibration;
 
 pub use material::FrictionMaterial;
 pub use modifier::{MAX_DT, MIN_DT, StickSlip, StickSlipConfig, valid_dt};
 pub use report::{ContactReport, WorldTotals};
+pub use snapshot::{SnapshotError, StickSlipSnapshot, WorldSnapshot};
 pub use vibration::{
     Amplitude, MAX_FORCE, MAX_FREQUENCY, MAX_RATIO, MAX_TANGENTIAL_STIFFNESS, VibrationDirection,
     VibrationMode, VibrationSource,

@@ -79,12 +79,12 @@ pub struct StickSlip<H = ()> {
     pub(crate) materials: ColliderMap<FrictionMaterial>,
     pub(crate) vibrations: ColliderMap<VibrationSource>,
     /// Colliders whose hook flag `attach` turned on.
-    flagged: ColliderMap<()>,
+    pub(crate) flagged: ColliderMap<()>,
     pub(crate) store: ContactStore,
     pub(crate) clock: Clock,
     pub(crate) inner: H,
-    reports: Vec<ContactReport>,
-    totals: WorldTotals,
+    pub(crate) reports: Vec<ContactReport>,
+    pub(crate) totals: WorldTotals,
 }
 
 impl StickSlip<()> {

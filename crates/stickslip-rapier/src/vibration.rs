@@ -146,6 +146,14 @@ impl VibrationSource {
     pub fn mode(&self) -> VibrationMode {
         self.mode
     }
+    /// Amplitude.
+    pub fn amplitude(&self) -> Amplitude {
+        self.amplitude
+    }
+    /// Phase (in periods).
+    pub fn phase(&self) -> f64 {
+        self.phase
+    }
     /// Frequency (Hz).
     pub fn frequency(&self) -> f64 {
         self.frequency

@@ -3,8 +3,11 @@
 use crate::build::Scene;
 use crate::drive::apply_drivers;
 use crate::spec::BodyKind;
-use serde::Serialize;
+use rapier3d::prelude::*;
+use serde::{Deserialize, Serialize};
 use stickslip_core::law::Regime;
+use stickslip_rapier::StickSlip;
+use stickslip_rapier::snapshot::{SnapshotError, StickSlipSnapshot, load_value, save_value};
 
 /// Steps a scene and collects statistics.
 pub struct Runner {
@@ -15,7 +18,7 @@ pub struct Runner {
 }
 
 /// Contacts per regime.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct RegimeCounts {
     /// Sticking.
     pub sticking: u64,
@@ -193,6 +196,113 @@ impl Runner {
             finite,
             bodies,
         }
+    }
+}
+
+/// Header kind of a runner snapshot file (see [`stickslip_rapier::snapshot`]).
+const KIND_RUNNER: u8 = 2;
+
+/// A runner snapshot being written: the world by reference.
+#[derive(Serialize)]
+struct RunnerSnapshotRef<'a> {
+    scenario: &'a str,
+    steps: u64,
+    regime_steps: RegimeCounts,
+    max_contacts: u64,
+    world: &'a PhysicsWorld,
+    friction: StickSlipSnapshot,
+}
+
+/// A runner snapshot read back.
+#[derive(Deserialize)]
+struct RunnerSnapshot {
+    scenario: String,
+    steps: u64,
+    regime_steps: RegimeCounts,
+    max_contacts: u64,
+    world: PhysicsWorld,
+    friction: StickSlipSnapshot,
+}
+
+impl Runner {
+    /// Writes the run's state — rapier's world, the stickslip modifier's state and this
+    /// runner's counters — to `writer`, in stickslip's snapshot format (header kind 2, see
+    /// [`stickslip_rapier::snapshot`]). [`Runner::resume`] continues from it bit-identically.
+    pub fn save_snapshot<W: std::io::Write>(&self, writer: W) -> Result<(), SnapshotError> {
+        let bundle = RunnerSnapshotRef {
+            scenario: &self.scene.name,
+            steps: self.steps,
+            regime_steps: self.regime_steps,
+            max_contacts: self.max_contacts as u64,
+            world: &self.scene.world,
+            friction: self.scene.stickslip.snapshot(),
+        };
+        save_value(writer, KIND_RUNNER, &bundle)
+    }
+
+    /// A runner continuing the run saved by [`Runner::save_snapshot`]: `scene` is built from
+    /// the same scenario (it supplies names, start positions and drivers); its world and
+    /// modifier are replaced by the saved ones, and the step count and statistics go on from
+    /// the saved values. The snapshot must name the same scenario and hold every body and
+    /// collider of `scene`; everything in it is validated (a typed error, never a panic).
+    pub fn resume<R: std::io::Read>(mut scene: Scene, reader: R) -> Result<Self, SnapshotError> {
+        let snap: RunnerSnapshot = load_value(reader, KIND_RUNNER)?;
+        let mismatch = |reason: String| SnapshotError::Invalid {
+            field: "scenario",
+            reason,
+        };
+        if snap.scenario != scene.name {
+            return Err(mismatch(format!(
+                "the snapshot is of scenario {:?}, not {:?}",
+                snap.scenario, scene.name
+            )));
+        }
+        if let Some(b) = scene
+            .bodies
+            .iter()
+            .find(|b| !snap.world.bodies.contains(b.handle))
+        {
+            return Err(mismatch(format!(
+                "body {:?} is not in the snapshot",
+                b.name
+            )));
+        }
+        if let Some(c) = scene
+            .colliders
+            .iter()
+            .find(|c| !snap.world.colliders.contains(c.handle))
+        {
+            return Err(mismatch(format!(
+                "collider {} of body {:?} is not in the snapshot",
+                c.index, scene.bodies[c.body].name
+            )));
+        }
+        let stickslip = StickSlip::restore(&snap.friction, &snap.world.colliders, ())?;
+        // Counters far beyond any run (2⁵³ steps), so that counting on never overflows.
+        const MAX_COUNT: u64 = 1 << 53;
+        let r = snap.regime_steps;
+        let counts = [
+            snap.steps,
+            snap.max_contacts,
+            r.sticking,
+            r.stick_slip,
+            r.sliding,
+        ];
+        if counts.iter().any(|&n| n > MAX_COUNT) {
+            return Err(SnapshotError::Invalid {
+                field: "runner counters",
+                reason: "a step or contact count beyond 2^53".into(),
+            });
+        }
+        let max_contacts = snap.max_contacts as usize;
+        scene.world = snap.world;
+        scene.stickslip = stickslip;
+        Ok(Runner {
+            scene,
+            steps: snap.steps,
+            regime_steps: snap.regime_steps,
+            max_contacts,
+        })
     }
 }
 

@@ -1,0 +1,900 @@
+//! Snapshot and restore: save a world with stickslip and resume it bit-identically.
+//!
+//! rapier serializes its own world (`PhysicsWorld` with rapier's `serde-serialize` feature);
+//! [`StickSlipSnapshot`] is the rest: everything the [`StickSlip`] modifier keeps except your
+//! wrapped hooks `H` — the tuning, the default and per-collider materials, the vibration
+//! sources, the colliders whose hook flag it turned on, the per-contact friction state (law
+//! state, stick anchors, mean normal forces, and the slot/generation layout that rapier's
+//! manifolds point at through their `user_data`), the clock, the totals and the last reports.
+//! A world resumed from both continues exactly as the uninterrupted one, bit for bit.
+//!
+//! ## Save and resume a world
+//! ```
+//! use rapier3d::prelude::*;
+//! use stickslip_core::law::{Coulomb, Law};
+//! use stickslip_rapier::{StickSlip, WorldSnapshot};
+//!
+//! let mut world = PhysicsWorld::default();
+//! let ground = world.insert_collider(ColliderBuilder::cuboid(5.0, 0.1, 5.0), None);
+//! world.insert(
+//!     RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 0.35, 0.0)),
+//!     ColliderBuilder::cuboid(0.25, 0.25, 0.25),
+//! );
+//! let mut friction = StickSlip::new(Law::Coulomb(Coulomb::new(0.5).unwrap()));
+//! friction.attach(&mut world.colliders, ground, None);
+//! for _ in 0..30 {
+//!     friction.step(&mut world);
+//! }
+//! // Save (any `std::io::Write`: a file, a socket, a Vec).
+//! let mut bytes = Vec::new();
+//! WorldSnapshot::save_from(&world, &friction, &mut bytes).unwrap();
+//! // Resume (any `std::io::Read`); your own hooks go back in as the last argument.
+//! let (mut resumed, mut resumed_friction) =
+//!     WorldSnapshot::load(bytes.as_slice()).unwrap().restore(()).unwrap();
+//! friction.step(&mut world);
+//! resumed_friction.step(&mut resumed);
+//! let (a, b) = (world.bodies.iter().next().unwrap().1, resumed.bodies.iter().next().unwrap().1);
+//! assert_eq!(a.translation(), b.translation());
+//! ```
+//!
+//! In memory, [`StickSlip::snapshot`] and [`StickSlip::restore`] do the same for the modifier
+//! alone (pair it with your own copy of the rapier world, made with the same world state).
+//!
+//! ## Format
+//! [`WorldSnapshot::save`] and [`StickSlipSnapshot::save`] write a 13-byte header — the magic
+//! bytes `STKSLIP\0`, the format version ([`FORMAT_VERSION`], u32 little-endian) and one byte
+//! for the content (0: modifier only, 1: world and modifier) — followed by the data in CBOR
+//! (RFC 8949, through the `ciborium` crate): a compact binary encoding that keeps every f32 and
+//! f64 exactly (NaN and infinities included, which JSON cannot), and that is self-describing,
+//! which stickslip's tagged parameter enums need (the non-self-describing `bincode`/`postcard`
+//! cannot decode them). Closure waveforms ([`stickslip_core::waveform::Waveform::from_fn`])
+//! cannot be saved to a file ([`SnapshotError::Encode`]); in-memory snapshots keep them.
+//!
+//! ## Untrusted files
+//! A snapshot file is checked before anything is built from it: [`StickSlip::restore`]
+//! re-validates every parameter through the constructors (materials, vibration sources,
+//! tuning), requires finite state, and checks the contact store's indices (slots, free list,
+//! key map) for consistency, returning a [`SnapshotError`], never panicking. Nothing is
+//! allocated by a number read from the file beyond the file's own size: per-collider tables
+//! are only filled for colliders that exist in the collider set given to `restore` (entries
+//! of colliders that are not in it can never be reached by a step and are dropped). rapier's
+//! part is checked as far as rapier's own deserialization checks it; a panic inside it is
+//! caught and returned as [`SnapshotError::Decode`].
+
+use crate::collider_map::ColliderMap;
+use crate::contact_store::{ContactKey, ContactRecord, ContactStore, INDEX_BITS, Slot, lock};
+use crate::material::FrictionMaterial;
+use crate::modifier::{Clock, StickSlip, StickSlipConfig};
+use crate::report::{ContactReport, WorldTotals};
+use crate::vibration::{Amplitude, VibrationDirection, VibrationMode, VibrationSource};
+use rapier3d::prelude::*;
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
+use std::collections::HashMap;
+use std::io::{Read, Write};
+use std::sync::{Mutex, RwLock};
+use stickslip_core::ParamError;
+use stickslip_core::law::Regime;
+use stickslip_core::waveform::Waveform;
+
+/// Version of the snapshot format written by this build (and the only one it reads).
+pub const FORMAT_VERSION: u32 = 1;
+
+const MAGIC: [u8; 8] = *b"STKSLIP\0";
+/// Header kind of a [`StickSlipSnapshot`] file.
+pub const KIND_MODIFIER: u8 = 0;
+/// Header kind of a [`WorldSnapshot`] file.
+pub const KIND_WORLD: u8 = 1;
+
+/// Why a snapshot could not be written, read or restored.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum SnapshotError {
+    /// Reading or writing failed.
+    #[error("snapshot I/O failed: {0}")]
+    Io(#[from] std::io::Error),
+    /// The data does not start with a stickslip snapshot header (or is shorter than one).
+    #[error("not a stickslip snapshot (missing or wrong header)")]
+    NotASnapshot,
+    /// The header names a format version this build does not read.
+    #[error("snapshot format version {found} is not supported (this build reads {supported})")]
+    UnsupportedVersion {
+        /// Version in the file.
+        found: u32,
+        /// Version this build reads.
+        supported: u32,
+    },
+    /// The file holds another kind of snapshot (header byte 12: 0 modifier only, 1 world
+    /// and modifier, others for bundles written with [`save_value`]).
+    #[error("the file holds a snapshot of kind {found}, not of kind {expected}")]
+    WrongKind {
+        /// Kind in the file.
+        found: u8,
+        /// Kind asked for.
+        expected: u8,
+    },
+    /// The state cannot be encoded (e.g. a closure waveform).
+    #[error("could not encode the snapshot: {0}")]
+    Encode(String),
+    /// The data is not a well-formed snapshot (truncated, corrupted, trailing bytes, or a
+    /// parameter rejected by its constructor while decoding).
+    #[error("could not decode the snapshot: {0}")]
+    Decode(String),
+    /// A parameter of the snapshot is rejected by its constructor.
+    #[error("invalid {field} in the snapshot: {source}")]
+    Param {
+        /// Which part of the snapshot.
+        field: &'static str,
+        /// The constructor's reason.
+        #[source]
+        source: ParamError,
+    },
+    /// A value or index of the snapshot is out of range or inconsistent.
+    #[error("invalid {field} in the snapshot: {reason}")]
+    Invalid {
+        /// Which part of the snapshot.
+        field: &'static str,
+        /// What is wrong.
+        reason: String,
+    },
+}
+
+fn invalid(field: &'static str, reason: impl Into<String>) -> SnapshotError {
+    SnapshotError::Invalid {
+        field,
+        reason: reason.into(),
+    }
+}
+
+/// A collider handle as plain data.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Serialize, Deserialize)]
+struct Handle {
+    index: u32,
+    generation: u32,
+}
+
+impl From<ColliderHandle> for Handle {
+    fn from(h: ColliderHandle) -> Self {
+        let (index, generation) = h.0.into_raw_parts();
+        Handle { index, generation }
+    }
+}
+
+impl From<Handle> for ColliderHandle {
+    fn from(h: Handle) -> Self {
+        ColliderHandle::from_raw_parts(h.index, h.generation)
+    }
+}
+
+/// One entry of a per-collider table.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+struct Entry<T> {
+    collider: Handle,
+    value: T,
+}
+
+/// A waveform; table waveforms are kept as their normalized samples, bit for bit.
+#[derive(Debug, Clone)]
+struct WaveformSnapshot(Waveform);
+
+#[derive(Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+enum WaveformRepr {
+    Named(Waveform),
+    NormalizedTable(Vec<f64>),
+}
+
+impl Serialize for WaveformSnapshot {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match &self.0 {
+            Waveform::Table(t) => WaveformRepr::NormalizedTable(t.samples().to_vec()).serialize(s),
+            w => WaveformRepr::Named(w.clone()).serialize(s),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for WaveformSnapshot {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        match WaveformRepr::deserialize(d)? {
+            WaveformRepr::Named(w) => Ok(WaveformSnapshot(w)),
+            WaveformRepr::NormalizedTable(samples) => Waveform::from_normalized_table(&samples)
+                .map(WaveformSnapshot)
+                .map_err(serde::de::Error::custom),
+        }
+    }
+}
+
+/// A vibration source's parameters (its Ψ table is rebuilt, deterministically, on restore).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+struct VibrationSnapshot {
+    direction: VibrationDirection,
+    amplitude: Amplitude,
+    frequency: f64,
+    waveform: WaveformSnapshot,
+    phase: f64,
+    mode: VibrationMode,
+    tangential_stiffness: Option<f64>,
+}
+
+impl From<&VibrationSource> for VibrationSnapshot {
+    fn from(s: &VibrationSource) -> Self {
+        VibrationSnapshot {
+            direction: s.direction(),
+            amplitude: s.amplitude(),
+            frequency: s.frequency(),
+            waveform: WaveformSnapshot(s.waveform().clone()),
+            phase: s.phase(),
+            mode: s.mode(),
+            tangential_stiffness: s.tangential_stiffness(),
+        }
+    }
+}
+
+impl VibrationSnapshot {
+    fn to_source(&self) -> Result<VibrationSource, ParamError> {
+        let s = VibrationSource::new(
+            self.direction,
+            self.amplitude,
+            self.frequency,
+            self.waveform.0.clone(),
+            self.phase,
+            self.mode,
+        )?;
+        match self.tangential_stiffness {
+            Some(k) => s.with_tangential_stiffness(k),
+            None => Ok(s),
+        }
+    }
+}
+
+/// One contact's friction state.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+struct RecordSnapshot {
+    c1: Handle,
+    c2: Handle,
+    force: [f32; 3],
+    slide: f32,
+    limit: f32,
+    slip_speed: f32,
+    anchor1: [f32; 3],
+    anchor2: [f32; 3],
+    inner_user_data: u32,
+    mean_normal_force: f32,
+    touched: u16,
+    regime: u8,
+    anchored: bool,
+}
+
+impl From<&ContactRecord> for RecordSnapshot {
+    fn from(r: &ContactRecord) -> Self {
+        RecordSnapshot {
+            c1: r.c1.into(),
+            c2: r.c2.into(),
+            force: r.force.to_array(),
+            slide: r.slide,
+            limit: r.limit,
+            slip_speed: r.slip_speed,
+            anchor1: r.anchor1.to_array(),
+            anchor2: r.anchor2.to_array(),
+            inner_user_data: r.inner_user_data,
+            mean_normal_force: r.mean_normal_force,
+            touched: r.touched,
+            regime: r.regime,
+            anchored: r.anchored,
+        }
+    }
+}
+
+impl RecordSnapshot {
+    fn to_record(&self) -> Result<ContactRecord, SnapshotError> {
+        let finite = self
+            .force
+            .iter()
+            .chain(&self.anchor1)
+            .chain(&self.anchor2)
+            .chain(&[
+                self.slide,
+                self.limit,
+                self.slip_speed,
+                self.mean_normal_force,
+            ])
+            .all(|x| x.is_finite());
+        if !finite {
+            return Err(invalid("contact state", "a value is not finite"));
+        }
+        if !(self.limit >= 0.0 && self.slip_speed >= 0.0 && self.mean_normal_force >= 0.0) {
+            return Err(invalid(
+                "contact state",
+                "negative friction limit, slip speed or mean normal force",
+            ));
+        }
+        if !matches!(self.regime, 0..=2 | crate::hook::REGIME_RESET | u8::MAX) {
+            return Err(invalid(
+                "contact state",
+                format!("unknown regime code {}", self.regime),
+            ));
+        }
+        Ok(ContactRecord {
+            c1: self.c1.into(),
+            c2: self.c2.into(),
+            force: Vector::from_array(self.force),
+            slide: self.slide,
+            limit: self.limit,
+            slip_speed: self.slip_speed,
+            anchor1: Vector::from_array(self.anchor1),
+            anchor2: Vector::from_array(self.anchor2),
+            inner_user_data: self.inner_user_data,
+            mean_normal_force: self.mean_normal_force,
+            touched: self.touched,
+            regime: self.regime,
+            anchored: self.anchored,
+        })
+    }
+}
+
+/// One slot of the contact store: its generation (part of the `user_data` rapier's manifolds
+/// hold), and the record while it is live (a free slot's old record is never read again).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+struct SlotSnapshot {
+    generation: u8,
+    record: Option<RecordSnapshot>,
+}
+
+/// An entry of the store's key map (collider pair and features → slot).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+struct KeySnapshot {
+    c1: Handle,
+    c2: Handle,
+    features: u64,
+    slot: u32,
+}
+
+/// The contact store, exactly: slots in order, the key map, and the free list in pop order.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+struct ContactsSnapshot {
+    slots: Vec<SlotSnapshot>,
+    keys: Vec<KeySnapshot>,
+    free: Vec<u32>,
+}
+
+impl From<&ContactStore> for ContactsSnapshot {
+    fn from(store: &ContactStore) -> Self {
+        let slots = store.slots.read().unwrap_or_else(|e| e.into_inner());
+        let slots = slots
+            .iter()
+            .map(|s| {
+                let s = lock(s);
+                SlotSnapshot {
+                    generation: s.generation,
+                    record: s.live.then(|| RecordSnapshot::from(&s.record)),
+                }
+            })
+            .collect();
+        let mut keys: Vec<KeySnapshot> = lock(&store.by_key)
+            .iter()
+            .map(|(k, &slot)| KeySnapshot {
+                c1: k.c1.into(),
+                c2: k.c2.into(),
+                features: k.features,
+                slot,
+            })
+            .collect();
+        // The map's order never matters; sorted, equal states give equal bytes.
+        keys.sort_by_key(|k| (k.c1, k.c2, k.features, k.slot));
+        ContactsSnapshot {
+            slots,
+            keys,
+            free: lock(&store.free).clone(),
+        }
+    }
+}
+
+impl ContactsSnapshot {
+    fn to_store(&self) -> Result<ContactStore, SnapshotError> {
+        let n = self.slots.len();
+        // Encoded user_data holds slot index + 1 in INDEX_BITS bits.
+        if n >= (1usize << INDEX_BITS) {
+            return Err(invalid("contact store", format!("{n} slots")));
+        }
+        let unused = ContactKey {
+            c1: ColliderHandle::invalid(),
+            c2: ColliderHandle::invalid(),
+            features: 0,
+        };
+        let mut slots = Vec::with_capacity(n);
+        for s in &self.slots {
+            let (live, record) = match &s.record {
+                Some(r) => (true, r.to_record()?),
+                None => (false, ContactRecord::new(&unused)),
+            };
+            slots.push(Mutex::new(Slot {
+                generation: s.generation,
+                live,
+                record,
+            }));
+        }
+        let is_live = |i: u32| self.slots.get(i as usize).map(|s| s.record.is_some());
+        // The free list is exactly the free slots, each once.
+        let mut seen = vec![false; n];
+        for &i in &self.free {
+            match is_live(i) {
+                None => return Err(invalid("free list", format!("slot {i} of {n}"))),
+                Some(true) => return Err(invalid("free list", format!("slot {i} is live"))),
+                Some(false) if seen[i as usize] => {
+                    return Err(invalid("free list", format!("slot {i} listed twice")));
+                }
+                Some(false) => seen[i as usize] = true,
+            }
+        }
+        let free_slots = self.slots.iter().filter(|s| s.record.is_none()).count();
+        if free_slots != self.free.len() {
+            return Err(invalid(
+                "free list",
+                format!("{} entries for {free_slots} free slots", self.free.len()),
+            ));
+        }
+        let mut by_key = HashMap::with_capacity(self.keys.len());
+        for k in &self.keys {
+            let key = ContactKey {
+                c1: k.c1.into(),
+                c2: k.c2.into(),
+                features: k.features,
+            };
+            let record = self
+                .slots
+                .get(k.slot as usize)
+                .and_then(|s| s.record.as_ref());
+            match record {
+                Some(r) if r.c1 == k.c1 && r.c2 == k.c2 => {}
+                _ => {
+                    return Err(invalid(
+                        "contact key map",
+                        format!("slot {} is not a live record of its pair", k.slot),
+                    ));
+                }
+            }
+            if by_key.insert(key, k.slot).is_some() {
+                return Err(invalid("contact key map", "a key is listed twice"));
+            }
+        }
+        Ok(ContactStore {
+            slots: RwLock::new(slots),
+            by_key: Mutex::new(by_key),
+            free: Mutex::new(self.free.clone()),
+        })
+    }
+}
+
+/// The step clock.
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+struct ClockSnapshot {
+    time: f64,
+    dt: f64,
+    step: u32,
+}
+
+/// World totals of the last step.
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+struct TotalsSnapshot {
+    contacts: u64,
+    sticking: u64,
+    stick_slip: u64,
+    sliding: u64,
+    normal_force: f64,
+    friction_force: f64,
+    dissipated_power: f64,
+    dissipated_energy: f64,
+    reset: u64,
+}
+
+/// A report of the last step.
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+struct ReportSnapshot {
+    collider1: Handle,
+    collider2: Handle,
+    point: [f32; 3],
+    normal: [f32; 3],
+    regime: Regime,
+    mu: f64,
+    limit: f64,
+    normal_force: f64,
+    friction_force: [f32; 3],
+    slip_velocity: [f32; 3],
+    dissipated_power: f64,
+    reset: bool,
+}
+
+impl From<&ContactReport> for ReportSnapshot {
+    fn from(r: &ContactReport) -> Self {
+        ReportSnapshot {
+            collider1: r.collider1.into(),
+            collider2: r.collider2.into(),
+            point: r.point,
+            normal: r.normal,
+            regime: r.regime,
+            mu: r.mu,
+            limit: r.limit,
+            normal_force: r.normal_force,
+            friction_force: r.friction_force,
+            slip_velocity: r.slip_velocity,
+            dissipated_power: r.dissipated_power,
+            reset: r.reset,
+        }
+    }
+}
+
+impl ReportSnapshot {
+    fn to_report(self) -> Result<ContactReport, SnapshotError> {
+        let finite = self
+            .point
+            .iter()
+            .chain(&self.normal)
+            .chain(&self.friction_force)
+            .chain(&self.slip_velocity)
+            .all(|x| x.is_finite())
+            && [
+                self.mu,
+                self.limit,
+                self.normal_force,
+                self.dissipated_power,
+            ]
+            .iter()
+            .all(|x| x.is_finite());
+        if !finite {
+            return Err(invalid("contact report", "a value is not finite"));
+        }
+        Ok(ContactReport {
+            collider1: self.collider1.into(),
+            collider2: self.collider2.into(),
+            point: self.point,
+            normal: self.normal,
+            regime: self.regime,
+            mu: self.mu,
+            limit: self.limit,
+            normal_force: self.normal_force,
+            friction_force: self.friction_force,
+            slip_velocity: self.slip_velocity,
+            dissipated_power: self.dissipated_power,
+            reset: self.reset,
+        })
+    }
+}
+
+/// Everything a [`StickSlip`] modifier keeps except the user's wrapped hooks: take one with
+/// [`StickSlip::snapshot`], turn it back into a modifier with [`StickSlip::restore`], and
+/// store it with serde (or [`StickSlipSnapshot::save`]/[`StickSlipSnapshot::load`], or
+/// bundled with rapier's world in a [`WorldSnapshot`]). See the [module docs](self).
+///
+/// The contents are private: the snapshot is only meant to be restored. A deserialized
+/// snapshot is validated by [`StickSlip::restore`].
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct StickSlipSnapshot {
+    config: StickSlipConfig,
+    default_material: FrictionMaterial,
+    materials: Vec<Entry<FrictionMaterial>>,
+    vibrations: Vec<Entry<VibrationSnapshot>>,
+    flagged: Vec<Handle>,
+    contacts: ContactsSnapshot,
+    clock: ClockSnapshot,
+    totals: TotalsSnapshot,
+    reports: Vec<ReportSnapshot>,
+}
+
+impl StickSlipSnapshot {
+    /// Simulated time (s) at the snapshot.
+    pub fn time(&self) -> f64 {
+        self.clock.time
+    }
+
+    /// Number of contacts with friction state at the snapshot.
+    pub fn active_contacts(&self) -> usize {
+        self.contacts
+            .slots
+            .iter()
+            .filter(|s| s.record.is_some())
+            .count()
+    }
+
+    /// Writes the snapshot (header and CBOR, see the [module docs](self)) to `writer`.
+    pub fn save<W: Write>(&self, writer: W) -> Result<(), SnapshotError> {
+        write_framed(writer, KIND_MODIFIER, self)
+    }
+
+    /// Reads a snapshot written by [`Self::save`]; [`StickSlip::restore`] validates it.
+    pub fn load<R: Read>(reader: R) -> Result<Self, SnapshotError> {
+        read_framed(reader, KIND_MODIFIER)
+    }
+}
+
+/// Entries of `entries` whose collider is in `colliders`, in a fresh map; entries must come
+/// in increasing collider order (as [`StickSlip::snapshot`] writes them).
+fn restore_map<T, U>(
+    field: &'static str,
+    entries: &[Entry<T>],
+    colliders: &ColliderSet,
+    mut convert: impl FnMut(&T) -> Result<U, SnapshotError>,
+) -> Result<ColliderMap<U>, SnapshotError> {
+    let mut map = ColliderMap::default();
+    for (i, e) in entries.iter().enumerate() {
+        if i > 0 && entries[i - 1].collider.index >= e.collider.index {
+            return Err(invalid(field, "entries not in increasing collider order"));
+        }
+        let value = convert(&e.value)?;
+        let handle = ColliderHandle::from(e.collider);
+        // Only colliders of the set size the dense map; others can never be stepped.
+        if colliders.contains(handle) {
+            map.insert(handle, value);
+        }
+    }
+    Ok(map)
+}
+
+impl<H> StickSlip<H> {
+    /// A snapshot of the modifier's whole state except the wrapped hooks (see
+    /// [`StickSlipSnapshot`]). Take it between steps (after [`StickSlip::end_step`]).
+    pub fn snapshot(&self) -> StickSlipSnapshot {
+        let t = &self.totals;
+        StickSlipSnapshot {
+            config: self.config,
+            default_material: self.default_material.clone(),
+            materials: self
+                .materials
+                .iter()
+                .map(|(h, m)| Entry {
+                    collider: h.into(),
+                    value: m.clone(),
+                })
+                .collect(),
+            vibrations: self
+                .vibrations
+                .iter()
+                .map(|(h, s)| Entry {
+                    collider: h.into(),
+                    value: s.into(),
+                })
+                .collect(),
+            flagged: self.flagged.iter().map(|(h, _)| h.into()).collect(),
+            contacts: (&self.store).into(),
+            clock: ClockSnapshot {
+                time: self.clock.time,
+                dt: self.clock.dt,
+                step: self.clock.step,
+            },
+            totals: TotalsSnapshot {
+                contacts: t.contacts as u64,
+                sticking: t.sticking as u64,
+                stick_slip: t.stick_slip as u64,
+                sliding: t.sliding as u64,
+                normal_force: t.normal_force,
+                friction_force: t.friction_force,
+                dissipated_power: t.dissipated_power,
+                dissipated_energy: t.dissipated_energy,
+                reset: t.reset as u64,
+            },
+            reports: self.reports.iter().map(ReportSnapshot::from).collect(),
+        }
+    }
+
+    /// The modifier `snapshot` was taken of, wrapping the hooks `inner` (hooks are code, not
+    /// data: pass the same ones, in the same state, for a bit-identical resume).
+    ///
+    /// `colliders` is the collider set of the world it will step (the restored rapier
+    /// world's): per-collider materials, vibration sources and hook flags of colliders that
+    /// are not in it are dropped (no step could reach them), and nothing is allocated by a
+    /// handle that is not in it. Every parameter and index is validated first (see the
+    /// [module docs](self)).
+    pub fn restore(
+        snapshot: &StickSlipSnapshot,
+        colliders: &ColliderSet,
+        inner: H,
+    ) -> Result<Self, SnapshotError> {
+        let s = snapshot;
+        s.config.validate().map_err(|source| SnapshotError::Param {
+            field: "config",
+            source,
+        })?;
+        let materials = restore_map("materials", &s.materials, colliders, |m| Ok(m.clone()))?;
+        let vibrations = restore_map("vibration sources", &s.vibrations, colliders, |v| {
+            v.to_source().map_err(|source| SnapshotError::Param {
+                field: "vibration source",
+                source,
+            })
+        })?;
+        let flagged_entries: Vec<Entry<()>> = s
+            .flagged
+            .iter()
+            .map(|&collider| Entry {
+                collider,
+                value: (),
+            })
+            .collect();
+        let flagged = restore_map("hook flags", &flagged_entries, colliders, |_| Ok(()))?;
+        let store = s.contacts.to_store()?;
+        let c = s.clock;
+        if !(c.time.is_finite() && c.dt.is_finite() && c.dt >= 0.0) {
+            return Err(invalid("clock", "time or dt not finite, or dt negative"));
+        }
+        let t = s.totals;
+        let count = |n: u64| {
+            usize::try_from(n).map_err(|_| invalid("totals", format!("count {n} too large")))
+        };
+        let totals = WorldTotals {
+            contacts: count(t.contacts)?,
+            sticking: count(t.sticking)?,
+            stick_slip: count(t.stick_slip)?,
+            sliding: count(t.sliding)?,
+            normal_force: t.normal_force,
+            friction_force: t.friction_force,
+            dissipated_power: t.dissipated_power,
+            dissipated_energy: t.dissipated_energy,
+            reset: count(t.reset)?,
+        };
+        let forces = [
+            totals.normal_force,
+            totals.friction_force,
+            totals.dissipated_power,
+            totals.dissipated_energy,
+        ];
+        if !forces.iter().all(|x| x.is_finite()) {
+            return Err(invalid("totals", "a value is not finite"));
+        }
+        let reports = s
+            .reports
+            .iter()
+            .map(|r| r.to_report())
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(StickSlip {
+            config: s.config,
+            default_material: s.default_material.clone(),
+            materials,
+            vibrations,
+            flagged,
+            store,
+            clock: Clock {
+                time: c.time,
+                dt: c.dt,
+                step: c.step,
+            },
+            inner,
+            reports,
+            totals,
+        })
+    }
+}
+
+/// rapier's world and the stickslip modifier's state together: what a saved simulation
+/// needs to resume. Write one with [`WorldSnapshot::save_from`] (from a live world) or
+/// [`WorldSnapshot::save`], read it with [`WorldSnapshot::load`] and resume with
+/// [`WorldSnapshot::restore`]. See the [module docs](self).
+#[derive(Serialize, Deserialize)]
+pub struct WorldSnapshot {
+    /// rapier's world (its `serde-serialize` form: bodies, colliders, joints, narrow and
+    /// broad phase, islands, integration parameters, gravity).
+    pub world: PhysicsWorld,
+    /// The modifier's state.
+    pub friction: StickSlipSnapshot,
+}
+
+/// [`WorldSnapshot`] by reference, for saving a live world without copying it.
+#[derive(Serialize)]
+struct WorldSnapshotRef<'a> {
+    world: &'a PhysicsWorld,
+    friction: StickSlipSnapshot,
+}
+
+impl WorldSnapshot {
+    /// Writes `world` and `friction`'s state to `writer` (header and CBOR, see the
+    /// [module docs](self)). Call between steps.
+    pub fn save_from<H, W: Write>(
+        world: &PhysicsWorld,
+        friction: &StickSlip<H>,
+        writer: W,
+    ) -> Result<(), SnapshotError> {
+        let bundle = WorldSnapshotRef {
+            world,
+            friction: friction.snapshot(),
+        };
+        write_framed(writer, KIND_WORLD, &bundle)
+    }
+
+    /// Writes this snapshot to `writer`.
+    pub fn save<W: Write>(&self, writer: W) -> Result<(), SnapshotError> {
+        write_framed(writer, KIND_WORLD, self)
+    }
+
+    /// Reads a snapshot written by [`Self::save_from`] or [`Self::save`] (the reader is
+    /// buffered inside). The modifier's part is validated by [`Self::restore`].
+    pub fn load<R: Read>(reader: R) -> Result<Self, SnapshotError> {
+        read_framed(reader, KIND_WORLD)
+    }
+
+    /// The rapier world and the modifier, wrapping your hooks `inner`, ready to step on.
+    pub fn restore<H>(self, inner: H) -> Result<(PhysicsWorld, StickSlip<H>), SnapshotError> {
+        let friction = StickSlip::restore(&self.friction, &self.world.colliders, inner)?;
+        Ok((self.world, friction))
+    }
+}
+
+/// Writes `value` in the snapshot format with header kind `kind`: for bundles of your own
+/// around a world and a [`StickSlipSnapshot`] (e.g. a runner's counters beside them). Kinds
+/// [`KIND_MODIFIER`] and [`KIND_WORLD`] are this module's; pick another one.
+pub fn save_value<T: Serialize, W: Write>(
+    writer: W,
+    kind: u8,
+    value: &T,
+) -> Result<(), SnapshotError> {
+    write_framed(writer, kind, value)
+}
+
+/// Reads a value written by [`save_value`] with the same `kind` (header checked, decoding
+/// errors and panics inside deserializers returned as errors, trailing bytes rejected).
+/// Validate what you read: [`StickSlip::restore`] does for the modifier's part.
+pub fn load_value<T: serde::de::DeserializeOwned, R: Read>(
+    reader: R,
+    kind: u8,
+) -> Result<T, SnapshotError> {
+    read_framed(reader, kind)
+}
+
+fn write_framed<T: Serialize, W: Write>(
+    writer: W,
+    kind: u8,
+    value: &T,
+) -> Result<(), SnapshotError> {
+    let mut w = std::io::BufWriter::new(writer);
+    w.write_all(&MAGIC)?;
+    w.write_all(&FORMAT_VERSION.to_le_bytes())?;
+    w.write_all(&[kind])?;
+    ciborium::into_writer(value, &mut w).map_err(|e| match e {
+        ciborium::ser::Error::Io(e) => SnapshotError::Io(e),
+        ciborium::ser::Error::Value(msg) => SnapshotError::Encode(msg),
+    })?;
+    w.flush()?;
+    Ok(())
+}
+
+fn read_framed<T: serde::de::DeserializeOwned, R: Read>(
+    reader: R,
+    kind: u8,
+) -> Result<T, SnapshotError> {
+    let mut r = std::io::BufReader::new(reader);
+    let mut header = [0u8; 13];
+    r.read_exact(&mut header).map_err(|e| match e.kind() {
+        std::io::ErrorKind::UnexpectedEof => SnapshotError::NotASnapshot,
+        _ => SnapshotError::Io(e),
+    })?;
+    if header[..8] != MAGIC {
+        return Err(SnapshotError::NotASnapshot);
+    }
+    let version = u32::from_le_bytes([header[8], header[9], header[10], header[11]]);
+    if version != FORMAT_VERSION {
+        return Err(SnapshotError::UnsupportedVersion {
+            found: version,
+            supported: FORMAT_VERSION,
+        });
+    }
+    if header[12] != kind {
+        return Err(SnapshotError::WrongKind {
+            found: header[12],
+            expected: kind,
+        });
+    }
+    // rapier's and serde's deserializers are not ours: a panic inside one is a decode error.
+    let decoded = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        ciborium::from_reader::<T, _>(&mut r)
+    }))
+    .map_err(|_| SnapshotError::Decode("the decoder panicked".into()))?;
+    let value = decoded.map_err(|e| match e {
+        ciborium::de::Error::Io(e) if e.kind() == std::io::ErrorKind::UnexpectedEof => {
+            SnapshotError::Decode("truncated".into())
+        }
+        ciborium::de::Error::Io(e) => SnapshotError::Io(e),
+        e => SnapshotError::Decode(e.to_string()),
+    })?;
+    let mut rest = [0u8; 1];
+    if r.read(&mut rest)? != 0 {
+        return Err(SnapshotError::Decode(
+            "trailing bytes after the snapshot".into(),
+        ));
+    }
+    Ok(value)
+}
