@@ -147,7 +147,7 @@ proptest! {
             None => None,
         };
         let mut scene = BoxOnGround { mass, dt, ..BoxOnGround::default() }.build();
-        let mut m = StickSlip::new(FrictionMaterial::new(law.clone()));
+        let mut m = StickSlip::new(FrictionMaterial::new(law.clone())).with_read_back(stickslip::rapier::ReadBack::Contacts);
         m.attach(&mut scene.world.colliders, scene.ground, None);
         if let Some(v) = &vibration {
             m.set_vibration(scene.ground, v.clone());

@@ -130,7 +130,7 @@ proptest! {
             colliders.push(c);
         }
         let mode = if averaged { VibrationMode::Averaged } else { VibrationMode::TimeResolved };
-        let mut m = StickSlip::new(material());
+        let mut m = StickSlip::new(material()).with_read_back(stickslip::rapier::ReadBack::Contacts);
         m.attach(&mut world.colliders, ground, None);
         m.set_vibration(ground, vibration(mode));
         for _ in 0..30 {

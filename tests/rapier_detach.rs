@@ -43,8 +43,10 @@ fn a_detached_collider_behaves_like_plain_rapier() {
     let law = Law::elasto_plastic(1e5, 0.8, 0.8, Curve::constant(0.6).unwrap()).unwrap();
     let (mut a, ground_a, boxes_a) = world();
     let (mut b, ground_b, boxes_b) = world();
-    let mut fa = StickSlip::new(FrictionMaterial::new(law.clone()));
-    let mut fb = StickSlip::new(FrictionMaterial::new(law));
+    let mut fa = StickSlip::new(FrictionMaterial::new(law.clone()))
+        .with_read_back(stickslip::rapier::ReadBack::Contacts);
+    let mut fb = StickSlip::new(FrictionMaterial::new(law))
+        .with_read_back(stickslip::rapier::ReadBack::Contacts);
     fa.attach(&mut a.colliders, ground_a, None);
     fb.attach(&mut b.colliders, ground_b, None);
     for k in 0..60 {

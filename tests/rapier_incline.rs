@@ -36,7 +36,8 @@ fn creep(law: Option<Law>, theta: f64, mu: f32) -> (f64, Option<(f64, f64)>) {
         c.set_friction(mu);
     }
     let mut modifier = law.map(|l| {
-        let mut m = StickSlip::new(FrictionMaterial::new(l));
+        let mut m = StickSlip::new(FrictionMaterial::new(l))
+            .with_read_back(stickslip::rapier::ReadBack::Contacts);
         m.attach(&mut world.colliders, ground, None);
         m
     });
@@ -111,7 +112,8 @@ fn slides_above_break_away_with_kinetic_acceleration() {
     for law in [ep(), Law::Coulomb(Coulomb::new(MU_MAX).unwrap())] {
         let mu_k = law.sliding_coefficient(1.0);
         let mut scene = incline(theta);
-        let mut m = StickSlip::new(FrictionMaterial::new(law.clone()));
+        let mut m = StickSlip::new(FrictionMaterial::new(law.clone()))
+            .with_read_back(stickslip::rapier::ReadBack::Contacts);
         m.attach(&mut scene.world.colliders, scene.ground, None);
         // Let the contact form, then measure x(t) over 1 s of sliding.
         for _ in 0..10 {

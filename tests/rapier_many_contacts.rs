@@ -52,7 +52,8 @@ fn hundreds_of_contacts_stay_consistent_through_churn() {
         bodies.push(b);
     }
     let law = Law::elasto_plastic(C, MU_BA, MU_MAX, Curve::constant(MU_MAX).unwrap()).unwrap();
-    let mut modifier = StickSlip::new(FrictionMaterial::new(law));
+    let mut modifier = StickSlip::new(FrictionMaterial::new(law))
+        .with_read_back(stickslip::rapier::ReadBack::Contacts);
     modifier.attach(&mut world.colliders, ground, None);
     let weight = 1000.0 * (2.0 * half as f64).powi(3) * 9.81;
     // Even boxes: pushed along the row at 0.8 of break-away (must hold); odd boxes: across
@@ -152,7 +153,8 @@ fn a_reformed_contact_starts_fresh() {
         ColliderBuilder::cuboid(0.2, 0.2, 0.2).density(1000.0),
     );
     let law = Law::elasto_plastic(C, MU_BA, MU_MAX, Curve::constant(MU_MAX).unwrap()).unwrap();
-    let mut modifier = StickSlip::new(FrictionMaterial::new(law));
+    let mut modifier = StickSlip::new(FrictionMaterial::new(law))
+        .with_read_back(stickslip::rapier::ReadBack::Contacts);
     modifier.attach(&mut world.colliders, ground, None);
     for _ in 0..20 {
         modifier.step(&mut world);
@@ -194,7 +196,8 @@ fn near_misses_keep_no_state() {
     let mut world = PhysicsWorld::default();
     let ground = world.insert_collider(ColliderBuilder::cuboid(100.0, 0.1, 5.0), None);
     let law = Law::elasto_plastic(C, MU_BA, MU_MAX, Curve::constant(MU_MAX).unwrap()).unwrap();
-    let mut modifier = StickSlip::new(FrictionMaterial::new(law));
+    let mut modifier = StickSlip::new(FrictionMaterial::new(law))
+        .with_read_back(stickslip::rapier::ReadBack::Contacts);
     modifier.attach(&mut world.colliders, ground, None);
     let half = 0.1;
     for i in 0..50 {

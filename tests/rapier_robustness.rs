@@ -28,7 +28,7 @@ fn material() -> FrictionMaterial {
 #[test]
 fn handles_outside_the_collider_set_are_no_ops() {
     let mut scene = BoxOnGround::default().build();
-    let mut m = StickSlip::new(material());
+    let mut m = StickSlip::new(material()).with_read_back(stickslip::rapier::ReadBack::Contacts);
     let forged = ColliderHandle::from_raw_parts(u32::MAX - 1, 7);
     for h in [ColliderHandle::invalid(), forged] {
         m.attach(&mut scene.world.colliders, h, Some(material()));
@@ -56,7 +56,7 @@ fn handles_outside_the_collider_set_are_no_ops() {
 #[test]
 fn bad_time_steps_leave_the_modifier_untouched() {
     let mut scene = BoxOnGround::default().build();
-    let mut m = StickSlip::new(material());
+    let mut m = StickSlip::new(material()).with_read_back(stickslip::rapier::ReadBack::Contacts);
     m.attach(&mut scene.world.colliders, scene.ground, None);
     scene.set_force(Vector::new(20.0, 0.0, 0.0));
     for _ in 0..30 {
@@ -97,7 +97,7 @@ fn nan_velocities_never_reach_the_friction_state() {
         );
         boxes.push(b);
     }
-    let mut m = StickSlip::new(material());
+    let mut m = StickSlip::new(material()).with_read_back(stickslip::rapier::ReadBack::Contacts);
     m.attach(&mut world.colliders, ground, None);
     for _ in 0..20 {
         m.step(&mut world);

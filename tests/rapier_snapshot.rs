@@ -107,7 +107,8 @@ fn modifier(kind: Kind, mode: VibrationMode, s: &mut Scene) -> Modifier {
         belt: s.belt,
         velocity: Vector::new(0.3, 0.0, 0.0),
     };
-    let mut m = StickSlip::with_hooks(FrictionMaterial::new(law(kind)), conveyor);
+    let mut m = StickSlip::with_hooks(FrictionMaterial::new(law(kind)), conveyor)
+        .with_read_back(stickslip::rapier::ReadBack::Contacts);
     m.attach(&mut s.world.colliders, s.ground, None);
     m.attach(&mut s.world.colliders, s.floor, None);
     let belt_law = Law::elasto_plastic(5e3, 0.7, 0.7, Curve::constant(0.7).unwrap()).unwrap();
@@ -500,47 +501,62 @@ fn inconsistent_snapshot_data_is_rejected() {
     let cs = &world.colliders;
     // The unedited snapshot restores through JSON as well.
     restore_edited(&snap, cs, |_| {}).unwrap();
-    let free = serde_json::to_value(&snap).unwrap()["contacts"]["free"].clone();
-    assert!(
-        !free.as_array().unwrap().is_empty(),
-        "the busy snapshot has free slots"
-    );
-    let nslots = serde_json::to_value(&snap).unwrap()["contacts"]["slots"]
-        .as_array()
-        .unwrap()
-        .len();
-    let live_slot = serde_json::to_value(&snap).unwrap()["contacts"]["keys"][0]["slot"].clone();
+    let json = serde_json::to_value(&snap).unwrap();
+    let slots = json["contacts"]["slots"].as_array().unwrap();
+    let free_slot = slots.iter().position(|s| s["record"].is_null());
+    let free_slot = free_slot.expect("the busy snapshot has free slots");
+    let (live_slot, live) = slots
+        .iter()
+        .enumerate()
+        .find(|(_, s)| !s["record"].is_null())
+        .unwrap();
+    let handle = |i: &serde_json::Value| serde_json::json!({"index": i, "generation": 0});
+    // A key-map entry for the live record's pair.
+    let key = serde_json::json!({
+        "c1": handle(&live["record"]["c1"]),
+        "c2": handle(&live["record"]["c2"]),
+        "features": 12345,
+        "slot": live_slot,
+    });
+    let push_key = move |edit: fn(&mut serde_json::Value)| -> Edit {
+        let mut k = key.clone();
+        edit(&mut k);
+        Box::new(move |j| j["contacts"]["keys"].as_array_mut().unwrap().push(k))
+    };
+    // The entry itself is consistent.
+    restore_edited(&snap, cs, push_key(|_| {})).unwrap();
     let cases: Vec<(&str, Edit)> = vec![
         (
-            "free list",
-            Box::new(move |j| j["contacts"]["free"][0] = nslots.into()),
+            "contact store",
+            push_key(|k| k["slot"] = 4_000_000_000u32.into()),
         ),
         (
-            "free list",
-            Box::new(move |j| j["contacts"]["free"][0] = live_slot),
-        ),
-        (
-            "free list",
-            Box::new(|j| {
-                let f = j["contacts"]["free"][0].clone();
-                j["contacts"]["free"].as_array_mut().unwrap().push(f);
+            "contact store",
+            Box::new(move |j| {
+                j["contacts"]["keys"]
+                    .as_array_mut()
+                    .unwrap()
+                    .push(serde_json::json!({
+                        "c1": {"index": 0, "generation": 0},
+                        "c2": {"index": 1, "generation": 0},
+                        "features": 1,
+                        "slot": free_slot,
+                    }));
             }),
         ),
         (
-            "free list",
-            Box::new(|j| {
-                j["contacts"]["free"].as_array_mut().unwrap().pop();
-            }),
+            "contact store",
+            push_key(|k| k["c1"]["index"] = (k["c1"]["index"].as_u64().unwrap() + 1).into()),
         ),
         (
-            "contact key map",
-            Box::new(|j| j["contacts"]["keys"][0]["slot"] = 4_000_000_000u32.into()),
-        ),
-        (
-            "contact key map",
-            Box::new(|j| {
-                let k = j["contacts"]["keys"][0].clone();
-                j["contacts"]["keys"].as_array_mut().unwrap().push(k);
+            "contact store",
+            Box::new({
+                let twice = push_key(|_| {});
+                let again = push_key(|k| k["features"] = 999.into());
+                move |j| {
+                    twice(j);
+                    again(j);
+                }
             }),
         ),
         (
@@ -665,7 +681,8 @@ fn hundreds_of_contacts_resume_bit_identically() {
     };
     let (mut world, ground, floor, bodies) = build();
     let threads = ThreadsSeen::default();
-    let mut m = StickSlip::with_hooks(FrictionMaterial::new(law(Kind::Ep)), threads.clone());
+    let mut m = StickSlip::with_hooks(FrictionMaterial::new(law(Kind::Ep)), threads.clone())
+        .with_read_back(stickslip::rapier::ReadBack::Contacts);
     m.attach(&mut world.colliders, ground, None);
     m.attach(&mut world.colliders, floor, None);
     let source = VibrationSource::new(

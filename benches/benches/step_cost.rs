@@ -260,6 +260,7 @@ fn extras(scene: Scene, variants: &[Variant], mode: Mode) -> Value {
         let sane = b.is_sane();
         let active = b.modifier().map(|m| m.active_contacts());
         let capacity = b.modifier().map(|m| m.state_capacity());
+        let state_heap = b.modifier().map(|m| m.state_heap_bytes());
         rows.push(json!({
             "variant": variant.name(),
             "manifolds": manifolds,
@@ -271,6 +272,7 @@ fn extras(scene: Scene, variants: &[Variant], mode: Mode) -> Value {
             "live_heap_growth_per_step": (live2 - live1) as f64 / alloc_steps as f64,
             "stickslip_active_contacts": active,
             "stickslip_state_slots": capacity,
+            "stickslip_state_heap_bytes": state_heap,
             "sane": sane,
         }));
         benches.push(b);
@@ -334,12 +336,16 @@ fn main() {
         );
         for r in v["variants"].as_array().into_iter().flatten() {
             println!(
-                "  {:<18} {:>6} manifolds {:>7} points {:>9.1} allocs/step {:>12} live B {:>12.0} ns/step (paired)",
+                "  {:<18} {:>6} manifolds {:>7} points {:>9.1} allocs/step {:>12} live B \
+                 ({} records, {} slots, {} state B) {:>12.0} ns/step (paired)",
                 r["variant"].as_str().unwrap_or(""),
                 r["manifolds"],
                 r["points"],
                 r["allocs_per_step"].as_f64().unwrap_or(f64::NAN),
                 r["live_heap_bytes"],
+                r["stickslip_active_contacts"],
+                r["stickslip_state_slots"],
+                r["stickslip_state_heap_bytes"],
                 r["paired_ns_per_step"].as_f64().unwrap_or(f64::NAN),
             );
         }

@@ -26,7 +26,8 @@ impl StickSlipWorld {
     pub fn new(material: FrictionMaterial) -> Self {
         StickSlipWorld {
             physics: rp::PhysicsWorld::default(),
-            friction: StickSlip::with_hooks(material, SurfaceHooks::default()),
+            friction: StickSlip::with_hooks(material, SurfaceHooks::default())
+                .with_read_back(stickslip_rapier::ReadBack::Contacts),
             bodies: HashMap::new(),
             colliders: HashMap::new(),
         }

@@ -1,18 +1,30 @@
-//! Per-contact friction state that lives as long as its contact manifold.
+//! Per-contact friction state that lives as long as its contact manifold: 60 bytes a contact.
 //!
 //! Lookup is cheap: a manifold's `user_data` holds its slot index (+1) and an 8-bit
 //! generation, so the hook reaches its record with one uncontended read lock and one
-//! uncontended per-slot mutex, never a global map under one lock per contact. Only manifolds
-//! whose `user_data` is 0 — new ones, and rapier's merged "cluster" manifolds whose
-//! `user_data` is reset every step — go through a map keyed by the collider pair and the
-//! first point's feature ids (which persist). Rapier does not report vanished manifolds, so
-//! [`ContactStore::sweep`] drops every record not touched during the step: memory tracks the
-//! active contacts (manifolds of sleeping pairs, which rapier keeps, are touched by the
-//! modifier's end-of-step read-back and keep their state), and a recycled slot gets a new generation so stale `user_data` never
-//! reaches another contact's state.
+//! per-slot spin lock (a bit of the slot's own metadata word), never a global map under one
+//! lock per contact. Only manifolds whose `user_data` is 0 — new ones, and rapier's merged
+//! "cluster" manifolds whose `user_data` is reset every step — go through a map keyed by the
+//! collider pair and the first point's feature ids (which persist); a manifold found through
+//! its `user_data` leaves that map, so at steady state it holds only the cluster manifolds.
+//!
+//! Rapier does not report vanished manifolds, so [`ContactStore::sweep`] drops every record
+//! not touched during the step: memory tracks the active contacts (manifolds of sleeping
+//! pairs, which rapier keeps, are touched by the modifier's end-of-step read-back and keep
+//! their state). New records take the lowest free slot and the sweep cuts free slots off the
+//! end, so the store shrinks back after churn; a recycled slot gets a new generation so stale
+//! `user_data` never reaches another contact's state.
+//!
+//! The stored form ([`Slot`]) packs the record: the slip speed of the last step (used only to
+//! extrapolate an accelerating slip) is kept as a bfloat16 (8 significant bits), the colliders
+//! by arena index, and lock, liveness, sweep parity, anchoring, regime and generation share
+//! one 16-bit word. The hook works on the unpacked [`ContactRecord`].
 
 use rapier3d::prelude::{ColliderHandle, Vector};
-use std::collections::HashMap;
+use std::cell::UnsafeCell;
+use std::cmp::Reverse;
+use std::collections::{BinaryHeap, HashMap};
+use std::sync::atomic::{AtomicBool, AtomicU16, Ordering};
 use std::sync::{Mutex, RwLock};
 
 /// What identifies a manifold across steps.
@@ -24,18 +36,16 @@ pub(crate) struct ContactKey {
     pub features: u64,
 }
 
-/// The state kept per active contact manifold: 76 bytes.
-#[derive(Debug, Clone, Copy)]
+/// The state of one contact manifold, as the hook works on it.
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct ContactRecord {
-    pub c1: ColliderHandle,
-    pub c2: ColliderHandle,
     /// Friction-law state s⃗ (tangential spring force, N) in world coordinates.
     pub force: Vector,
     /// Friction-law break-away progress σ (elasto-plastic law; 0 otherwise).
     pub slide: f32,
     /// The friction coefficient limit given to the solver last step (0: none yet).
     pub limit: f32,
-    /// Slip speed seen last step (m/s; 0 while holding).
+    /// Slip speed seen last step (m/s; 0 while holding), to 8 significant bits.
     pub slip_speed: f32,
     /// Stick anchor on collider 1, in collider 1's frame.
     pub anchor1: Vector,
@@ -45,20 +55,15 @@ pub(crate) struct ContactRecord {
     pub inner_user_data: u32,
     /// Mean normal force (N), low-pass filtered: sets the law's tangential stiffness.
     pub mean_normal_force: f32,
-    /// Low 16 bits of the step counter at the last touch (for the sweep; every live record
-    /// is touched or swept each step, so wrapping is harmless).
-    pub touched: u16,
-    /// Regime code (see `Regime`), 255 until the law has run.
+    /// Regime code (see `Regime`; `REGIME_RESET`), 255 until the law has run.
     pub regime: u8,
     /// Whether the anchors are valid.
     pub anchored: bool,
 }
 
-impl ContactRecord {
-    pub(crate) fn new(key: &ContactKey) -> Self {
+impl Default for ContactRecord {
+    fn default() -> Self {
         ContactRecord {
-            c1: key.c1,
-            c2: key.c2,
             force: Vector::ZERO,
             slide: 0.0,
             limit: 0.0,
@@ -67,26 +72,193 @@ impl ContactRecord {
             anchor2: Vector::ZERO,
             inner_user_data: 0,
             mean_normal_force: 0.0,
-            touched: 0,
             regime: u8::MAX,
             anchored: false,
         }
     }
 }
 
-#[derive(Debug)]
+/// A value rounded (towards zero) to bfloat16: what the store keeps of a slip speed.
+pub(crate) fn to_bf16(x: f32) -> u16 {
+    (x.to_bits() >> 16) as u16
+}
+
+/// The f32 a bfloat16 stands for.
+pub(crate) fn from_bf16(x: u16) -> f32 {
+    f32::from_bits((x as u32) << 16)
+}
+
+// The metadata word of a slot.
+const LOCK: u16 = 1;
+const LIVE: u16 = 1 << 1;
+/// Parity of the step that last touched the record (the sweep runs every step).
+const TOUCHED: u16 = 1 << 2;
+const ANCHORED: u16 = 1 << 3;
+/// The record has an entry in the key map.
+const KEYED: u16 = 1 << 7;
+const REGIME_SHIFT: u16 = 4;
+const REGIME_MASK: u16 = 0b111 << REGIME_SHIFT;
+const GENERATION_SHIFT: u16 = 8;
+
+fn pack_regime(code: u8) -> u16 {
+    let small = match code {
+        0..=2 => code,
+        u8::MAX => 3,
+        _ => 4, // REGIME_RESET
+    };
+    (small as u16) << REGIME_SHIFT
+}
+
+fn unpack_regime(meta: u16) -> u8 {
+    match (meta & REGIME_MASK) >> REGIME_SHIFT {
+        c @ 0..=2 => c as u8,
+        3 => u8::MAX,
+        _ => crate::hook::REGIME_RESET,
+    }
+}
+
+fn generation_of(meta: u16) -> u8 {
+    (meta >> GENERATION_SHIFT) as u8
+}
+
+fn parity(step: u32) -> u16 {
+    if step & 1 == 1 { TOUCHED } else { 0 }
+}
+
+/// The stored record: 56 bytes of f32/u32 fields.
+#[derive(Debug, Clone, Copy, Default)]
+struct Packed {
+    force: [f32; 3],
+    anchor1: [f32; 3],
+    anchor2: [f32; 3],
+    slide: f32,
+    limit: f32,
+    mean_normal_force: f32,
+    /// Arena indices of the pair's colliders (a check that `user_data` is this pair's).
+    c1: u32,
+    c2: u32,
+}
+
+/// One slot: 60 bytes.
 pub(crate) struct Slot {
-    pub generation: u8,
-    pub live: bool,
-    pub record: ContactRecord,
+    packed: UnsafeCell<Packed>,
+    slip_speed: UnsafeCell<u16>,
+    meta: AtomicU16,
+}
+
+// The cells are only accessed by the thread holding the slot's LOCK bit (or through
+// `&mut ContactStore`).
+unsafe impl Sync for Slot {}
+
+impl std::fmt::Debug for Slot {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Slot")
+            .field("meta", &self.meta.load(Ordering::Relaxed))
+            .finish_non_exhaustive()
+    }
+}
+
+impl Slot {
+    fn dead(generation: u8) -> Self {
+        Slot {
+            packed: UnsafeCell::new(Packed::default()),
+            slip_speed: UnsafeCell::new(0),
+            meta: AtomicU16::new((generation as u16) << GENERATION_SHIFT),
+        }
+    }
+
+    fn meta_mut(&mut self) -> &mut u16 {
+        self.meta.get_mut()
+    }
+
+    fn record(&mut self) -> ContactRecord {
+        let (p, slip, meta) = (
+            *self.packed.get_mut(),
+            *self.slip_speed.get_mut(),
+            *self.meta.get_mut(),
+        );
+        unpack(&p, slip, meta)
+    }
+
+    /// Spins until this thread holds the slot; returns the metadata word.
+    fn lock(&self) -> u16 {
+        loop {
+            let meta = self.meta.load(Ordering::Relaxed);
+            if meta & LOCK == 0
+                && self
+                    .meta
+                    .compare_exchange_weak(meta, meta | LOCK, Ordering::Acquire, Ordering::Relaxed)
+                    .is_ok()
+            {
+                return meta;
+            }
+            // Only two manifolds sharing one record (never in rapier's normal operation) wait.
+            std::hint::spin_loop();
+        }
+    }
+
+    fn unlock(&self, meta: u16) {
+        self.meta.store(meta & !LOCK, Ordering::Release);
+    }
+}
+
+fn unpack(p: &Packed, slip: u16, meta: u16) -> ContactRecord {
+    ContactRecord {
+        force: Vector::from_array(p.force),
+        slide: p.slide,
+        limit: p.limit,
+        slip_speed: from_bf16(slip),
+        anchor1: Vector::from_array(p.anchor1),
+        anchor2: Vector::from_array(p.anchor2),
+        inner_user_data: 0,
+        mean_normal_force: p.mean_normal_force,
+        regime: unpack_regime(meta),
+        anchored: meta & ANCHORED != 0,
+    }
+}
+
+fn pack(r: &ContactRecord, c1: u32, c2: u32) -> (Packed, u16) {
+    (
+        Packed {
+            force: r.force.to_array(),
+            anchor1: r.anchor1.to_array(),
+            anchor2: r.anchor2.to_array(),
+            slide: r.slide,
+            limit: r.limit,
+            mean_normal_force: r.mean_normal_force,
+            c1,
+            c2,
+        },
+        to_bf16(r.slip_speed),
+    )
+}
+
+fn with_state(meta: u16, r: &ContactRecord) -> u16 {
+    let mut m = (meta & !(REGIME_MASK | ANCHORED)) | pack_regime(r.regime);
+    if r.anchored {
+        m |= ANCHORED;
+    }
+    m
+}
+
+fn index_of(h: ColliderHandle) -> u32 {
+    h.0.into_raw_parts().0
 }
 
 /// Slab of contact records.
 #[derive(Debug, Default)]
 pub(crate) struct ContactStore {
-    pub(crate) slots: RwLock<Vec<Mutex<Slot>>>,
-    pub(crate) by_key: Mutex<HashMap<ContactKey, u32>>,
-    pub(crate) free: Mutex<Vec<u32>>,
+    slots: RwLock<Vec<Slot>>,
+    by_key: Mutex<HashMap<ContactKey, u32>>,
+    /// Free slot indices, lowest first.
+    free: Mutex<BinaryHeap<Reverse<u32>>>,
+    /// The wrapped hook's `user_data` per slot, for hooks that use it (none by default).
+    inner_data: Mutex<HashMap<u32, u32>>,
+    /// Whether any inner `user_data` was ever stored (then the hook consults `inner_data`).
+    inner_used: AtomicBool,
+    /// Generation given to the next slot pushed, so that a slot cut off the end and pushed
+    /// again does not restart at the generation stale `user_data` may still carry.
+    next_generation: std::sync::atomic::AtomicU8,
 }
 
 pub(crate) const INDEX_BITS: u32 = 24;
@@ -106,9 +278,35 @@ pub(crate) fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
     m.lock().unwrap_or_else(|e| e.into_inner())
 }
 
+/// A slot of a [`StoreImage`]: its generation and, while live, the record with its pair
+/// (collider arena indices), sweep parity and whether the key map points at it.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct SlotImage {
+    pub generation: u8,
+    pub live: Option<LiveImage>,
+}
+
+/// A live record of a [`StoreImage`].
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct LiveImage {
+    pub c1: u32,
+    pub c2: u32,
+    pub touched_odd: bool,
+    pub record: ContactRecord,
+}
+
+/// The whole store, exactly (for snapshots): slots in order, key map, free slots.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct StoreImage {
+    pub slots: Vec<SlotImage>,
+    pub keys: Vec<(ContactKey, u32)>,
+    pub next_generation: u8,
+}
+
 impl ContactStore {
     /// Runs `f` on the record of the manifold with `key`, creating it if needed; `f` learns
-    /// whether the record is new and the encoded `user_data`. Updates `user_data` to point at the record.
+    /// whether the record is new and the encoded `user_data`. Updates `user_data` to point at
+    /// the record.
     pub fn with_record<R>(
         &self,
         user_data: &mut u32,
@@ -116,95 +314,201 @@ impl ContactStore {
         step: u32,
         f: impl FnOnce(&mut ContactRecord, bool, u32) -> R,
     ) -> R {
-        let slots = self.slots.read().unwrap_or_else(|e| e.into_inner());
-        let try_slot =
-            |index: u32, generation: Option<u8>| -> Option<std::sync::MutexGuard<'_, Slot>> {
-                let slot = lock(slots.get(index as usize)?);
-                let ok = slot.live
-                    && generation.is_none_or(|g| g == slot.generation)
-                    && slot.record.c1 == key.c1
-                    && slot.record.c2 == key.c2;
-                ok.then_some(slot)
+        let (c1, c2) = (index_of(key.c1), index_of(key.c2));
+        {
+            let slots = self.slots.read().unwrap_or_else(|e| e.into_inner());
+            // Locks slot `index` if it is live, of this pair and (if given) of `generation`.
+            let try_slot = |index: u32, generation: Option<u8>| -> Option<(&Slot, u16)> {
+                let slot = slots.get(index as usize)?;
+                let meta = slot.lock();
+                // SAFETY: this thread holds the slot's lock.
+                let p = unsafe { &*slot.packed.get() };
+                let ok = meta & LIVE != 0
+                    && generation.is_none_or(|g| g == generation_of(meta))
+                    && p.c1 == c1
+                    && p.c2 == c2;
+                if ok {
+                    Some((slot, meta))
+                } else {
+                    slot.unlock(meta);
+                    None
+                }
             };
-        if let Some((index, generation)) = decode(*user_data)
-            && let Some(mut slot) = try_slot(index, Some(generation))
-        {
-            slot.record.touched = step as u16;
-            return f(&mut slot.record, false, *user_data);
+            if let Some((index, generation)) = decode(*user_data)
+                && let Some((slot, mut meta)) = try_slot(index, Some(generation))
+            {
+                // Found through its user_data: the manifold keeps it, the key map can let go.
+                if meta & KEYED != 0 {
+                    let mut by_key = lock(&self.by_key);
+                    if by_key.get(key) == Some(&index) {
+                        by_key.remove(key);
+                        meta &= !KEYED;
+                    }
+                }
+                return self.run(slot, index, meta, step, false, *user_data, f);
+            }
+            let known = lock(&self.by_key).get(key).copied();
+            if let Some(index) = known
+                && let Some((slot, meta)) = try_slot(index, None)
+            {
+                *user_data = encode(index, generation_of(meta));
+                return self.run(slot, index, meta, step, false, *user_data, f);
+            }
         }
-        let known = lock(&self.by_key).get(key).copied();
-        if let Some(index) = known
-            && let Some(mut slot) = try_slot(index, None)
-        {
-            *user_data = encode(index, slot.generation);
-            slot.record.touched = step as u16;
-            return f(&mut slot.record, false, *user_data);
-        }
-        drop(slots);
         // New contact: allocate under the write lock (rare: only when contacts appear).
         let mut slots = self.slots.write().unwrap_or_else(|e| e.into_inner());
-        let index = lock(&self.free).pop().unwrap_or_else(|| {
-            slots.push(Mutex::new(Slot {
-                generation: 0,
-                live: false,
-                record: ContactRecord::new(key),
-            }));
-            (slots.len() - 1) as u32
-        });
-        let mut slot = lock(&slots[index as usize]);
-        slot.generation = slot.generation.wrapping_add(1);
-        slot.live = true;
-        slot.record = ContactRecord::new(key);
-        slot.record.touched = step as u16;
+        let index = match lock(&self.free).pop() {
+            Some(Reverse(i)) => i,
+            None => {
+                if slots.len() == slots.capacity() {
+                    // Grow by 1/16: the slack stays small (memory per contact), the copies
+                    // amortized.
+                    let more = (slots.len() / 16).max(64);
+                    slots.reserve_exact(more);
+                }
+                let generation = self.next_generation.fetch_add(1, Ordering::Relaxed);
+                slots.push(Slot::dead(generation));
+                (slots.len() - 1) as u32
+            }
+        };
+        let slot = &mut slots[index as usize];
+        let generation = generation_of(*slot.meta_mut()).wrapping_add(1);
+        *slot.packed.get_mut() = Packed {
+            c1,
+            c2,
+            ..Packed::default()
+        };
+        *slot.slip_speed.get_mut() = 0;
+        let meta = LIVE | KEYED | pack_regime(u8::MAX) | (generation as u16) << GENERATION_SHIFT;
+        *slot.meta_mut() = meta;
         lock(&self.by_key).insert(*key, index);
-        *user_data = encode(index, slot.generation);
-        f(&mut slot.record, true, *user_data)
+        lock(&self.inner_data).remove(&index);
+        *user_data = encode(index, generation);
+        let slot = &slots[index as usize];
+        let meta = slot.lock();
+        self.run(slot, index, meta, step, true, *user_data, f)
     }
 
-    /// Drops every record not touched at `step`.
+    /// Runs `f` on the locked `slot`, stores the result and unlocks it.
+    #[allow(clippy::too_many_arguments)]
+    fn run<R>(
+        &self,
+        slot: &Slot,
+        index: u32,
+        meta: u16,
+        step: u32,
+        new: bool,
+        ours: u32,
+        f: impl FnOnce(&mut ContactRecord, bool, u32) -> R,
+    ) -> R {
+        // SAFETY: this thread holds the slot's lock (taken by the caller).
+        let (p, slip) = unsafe { (&mut *slot.packed.get(), &mut *slot.slip_speed.get()) };
+        let mut rec = unpack(p, *slip, meta);
+        let inner_used = self.inner_used.load(Ordering::Relaxed);
+        if inner_used {
+            rec.inner_user_data = lock(&self.inner_data).get(&index).copied().unwrap_or(0);
+        }
+        let before = rec.inner_user_data;
+        let out = f(&mut rec, new, ours);
+        if rec.inner_user_data != before {
+            let mut map = lock(&self.inner_data);
+            if rec.inner_user_data == 0 {
+                map.remove(&index);
+            } else {
+                map.insert(index, rec.inner_user_data);
+                self.inner_used.store(true, Ordering::Relaxed);
+            }
+        }
+        let (c1, c2) = (p.c1, p.c2);
+        (*p, *slip) = pack(&rec, c1, c2);
+        let meta = (with_state(meta, &rec) & !TOUCHED) | parity(step);
+        slot.unlock(meta);
+        out
+    }
+
+    /// Drops every record not touched at `step`, cuts free slots off the end and gives back
+    /// memory the store no longer needs.
     pub fn sweep(&mut self, step: u32) {
         let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
         let free = self.free.get_mut().unwrap_or_else(|e| e.into_inner());
         let mut dropped = false;
         for (i, slot) in slots.iter_mut().enumerate() {
-            let slot = slot.get_mut().unwrap_or_else(|e| e.into_inner());
-            if slot.live && slot.record.touched != step as u16 {
-                slot.live = false;
-                free.push(i as u32);
+            let meta = slot.meta_mut();
+            if *meta & LIVE != 0 && *meta & TOUCHED != parity(step) {
+                *meta &= !(LIVE | KEYED);
+                free.push(Reverse(i as u32));
                 dropped = true;
             }
         }
         if dropped {
-            let by_key = self.by_key.get_mut().unwrap_or_else(|e| e.into_inner());
-            by_key.retain(|_, &mut i| slots[i as usize].get_mut().map(|s| s.live).unwrap_or(false));
+            self.release(|_| false);
+        } else {
+            // Key-map entries also leave when their manifold is found through its user_data.
+            self.shrink();
+        }
+    }
+
+    /// After records died: drops their key-map and inner entries, cuts dead slots off the
+    /// end, and shrinks what grew far beyond the live contacts. `also_dead(slot)` names slots
+    /// to kill now.
+    fn release(&mut self, mut also_dead: impl FnMut(&mut Slot) -> bool) {
+        let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
+        let free = self.free.get_mut().unwrap_or_else(|e| e.into_inner());
+        for (i, slot) in slots.iter_mut().enumerate() {
+            if *slot.meta_mut() & LIVE != 0 && also_dead(slot) {
+                *slot.meta_mut() &= !(LIVE | KEYED);
+                free.push(Reverse(i as u32));
+            }
+        }
+        let mut n = slots.len();
+        while n > 0 && *slots[n - 1].meta_mut() & LIVE == 0 {
+            n -= 1;
+        }
+        if n < slots.len() {
+            slots.truncate(n);
+            free.retain(|&Reverse(i)| (i as usize) < n);
+        }
+        let live = |i: u32| {
+            slots
+                .get(i as usize)
+                .is_some_and(|s| s.meta.load(Ordering::Relaxed) & LIVE != 0)
+        };
+        let by_key = self.by_key.get_mut().unwrap_or_else(|e| e.into_inner());
+        by_key.retain(|_, i| live(*i));
+        let inner = self.inner_data.get_mut().unwrap_or_else(|e| e.into_inner());
+        inner.retain(|i, _| live(*i));
+        self.shrink();
+    }
+
+    /// Gives memory back once it is well beyond what is live (with hysteresis: no churn of
+    /// reallocations at steady state).
+    fn shrink(&mut self) {
+        let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
+        let free = self.free.get_mut().unwrap_or_else(|e| e.into_inner());
+        let by_key = self.by_key.get_mut().unwrap_or_else(|e| e.into_inner());
+        let inner = self.inner_data.get_mut().unwrap_or_else(|e| e.into_inner());
+        let n = slots.len();
+        if slots.capacity() > n + n / 8 + 64 {
+            slots.shrink_to(n + n / 16);
+        }
+        if free.capacity() > 2 * free.len() + 64 {
+            free.shrink_to(free.len());
+        }
+        if by_key.capacity() > 4 * by_key.len() + 64 {
+            by_key.shrink_to(by_key.len());
+        }
+        if inner.capacity() > 4 * inner.len() + 64 {
+            inner.shrink_to(inner.len());
         }
     }
 
     /// Drops every record of a contact involving `collider`.
     pub fn remove_collider(&mut self, collider: ColliderHandle) {
-        let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
-        let free = self.free.get_mut().unwrap_or_else(|e| e.into_inner());
-        for (i, slot) in slots.iter_mut().enumerate() {
-            let slot = slot.get_mut().unwrap_or_else(|e| e.into_inner());
-            if slot.live && (slot.record.c1 == collider || slot.record.c2 == collider) {
-                slot.live = false;
-                free.push(i as u32);
-            }
-        }
-        let by_key = self.by_key.get_mut().unwrap_or_else(|e| e.into_inner());
-        by_key.retain(|k, _| k.c1 != collider && k.c2 != collider);
-    }
-
-    /// The live records.
-    pub fn live(&mut self) -> impl Iterator<Item = &ContactRecord> {
-        self.slots
-            .get_mut()
-            .unwrap_or_else(|e| e.into_inner())
-            .iter_mut()
-            .filter_map(|s| {
-                let s = s.get_mut().unwrap_or_else(|e| e.into_inner());
-                s.live.then_some(&s.record)
-            })
+        let c = index_of(collider);
+        self.release(|slot| {
+            let p = slot.packed.get_mut();
+            p.c1 == c || p.c2 == c
+        });
     }
 
     /// The live record `user_data` points at, if it belongs to the pair `(c1, c2)`; marks it
@@ -215,26 +519,31 @@ impl ContactStore {
         c1: ColliderHandle,
         c2: ColliderHandle,
         step: u32,
-    ) -> Option<&ContactRecord> {
+    ) -> Option<ContactRecord> {
         let (index, generation) = decode(user_data)?;
         let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
-        let slot = slots
-            .get_mut(index as usize)?
-            .get_mut()
-            .unwrap_or_else(|e| e.into_inner());
-        let ok = slot.live
-            && slot.generation == generation
-            && slot.record.c1 == c1
-            && slot.record.c2 == c2;
-        if ok {
-            slot.record.touched = step as u16;
+        let slot = slots.get_mut(index as usize)?;
+        let meta = *slot.meta_mut();
+        let p = slot.packed.get_mut();
+        let ok = meta & LIVE != 0
+            && generation_of(meta) == generation
+            && p.c1 == index_of(c1)
+            && p.c2 == index_of(c2);
+        if !ok {
+            return None;
         }
-        ok.then_some(&slot.record)
+        *slot.meta_mut() = (meta & !TOUCHED) | parity(step);
+        Some(slot.record())
     }
 
     /// Number of live records.
     pub fn len(&mut self) -> usize {
-        self.live().count()
+        self.slots
+            .get_mut()
+            .unwrap_or_else(|e| e.into_inner())
+            .iter_mut()
+            .filter(|s| s.meta.load(Ordering::Relaxed) & LIVE != 0)
+            .count()
     }
 
     /// Slots allocated (live or free).
@@ -243,6 +552,120 @@ impl ContactStore {
             .get_mut()
             .unwrap_or_else(|e| e.into_inner())
             .len()
+    }
+
+    /// Heap bytes the store holds (slots, free list, key map, inner `user_data`), counting
+    /// allocated capacity.
+    pub fn heap_bytes(&mut self) -> usize {
+        let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
+        let free = self.free.get_mut().unwrap_or_else(|e| e.into_inner());
+        let by_key = self.by_key.get_mut().unwrap_or_else(|e| e.into_inner());
+        let inner = self.inner_data.get_mut().unwrap_or_else(|e| e.into_inner());
+        // A hash map entry: key, value and one control byte.
+        slots.capacity() * std::mem::size_of::<Slot>()
+            + free.capacity() * 4
+            + by_key.capacity() * (std::mem::size_of::<(ContactKey, u32)>() + 1)
+            + inner.capacity() * 9
+    }
+
+    /// The store, exactly (for snapshots). Takes each slot's lock while reading it, so it is
+    /// safe (if not meaningful) during a step.
+    pub fn image(&self) -> StoreImage {
+        let inner = lock(&self.inner_data).clone();
+        let slots = self.slots.read().unwrap_or_else(|e| e.into_inner());
+        let slots = slots
+            .iter()
+            .enumerate()
+            .map(|(i, s)| {
+                let meta = s.lock();
+                // SAFETY: this thread holds the slot's lock.
+                let (p, slip) = unsafe { (*s.packed.get(), *s.slip_speed.get()) };
+                s.unlock(meta);
+                let live = (meta & LIVE != 0).then(|| LiveImage {
+                    c1: p.c1,
+                    c2: p.c2,
+                    touched_odd: meta & TOUCHED != 0,
+                    record: ContactRecord {
+                        inner_user_data: inner.get(&(i as u32)).copied().unwrap_or(0),
+                        ..unpack(&p, slip, meta)
+                    },
+                });
+                SlotImage {
+                    generation: generation_of(meta),
+                    live,
+                }
+            })
+            .collect();
+        let mut keys: Vec<(ContactKey, u32)> =
+            lock(&self.by_key).iter().map(|(k, &i)| (*k, i)).collect();
+        // The map's order never matters; sorted, equal states give equal images.
+        keys.sort_by_key(|(k, i)| {
+            let raw = |h: ColliderHandle| h.0.into_raw_parts();
+            (raw(k.c1), raw(k.c2), k.features, *i)
+        });
+        StoreImage {
+            slots,
+            keys,
+            next_generation: self.next_generation.load(Ordering::Relaxed),
+        }
+    }
+
+    /// The store an image describes, or what is inconsistent in it.
+    pub fn from_image(image: &StoreImage) -> Result<ContactStore, String> {
+        let n = image.slots.len();
+        // Encoded user_data holds slot index + 1 in INDEX_BITS bits.
+        if n >= (1usize << INDEX_BITS) {
+            return Err(format!("{n} slots"));
+        }
+        let mut slots = Vec::with_capacity(n);
+        let mut free = BinaryHeap::new();
+        let mut inner = HashMap::new();
+        for (i, s) in image.slots.iter().enumerate() {
+            let mut slot = Slot::dead(s.generation);
+            match &s.live {
+                None => free.push(Reverse(i as u32)),
+                Some(l) => {
+                    let (p, slip) = pack(&l.record, l.c1, l.c2);
+                    *slot.packed.get_mut() = p;
+                    *slot.slip_speed.get_mut() = slip;
+                    let mut meta = with_state(*slot.meta_mut(), &l.record) | LIVE;
+                    if l.touched_odd {
+                        meta |= TOUCHED;
+                    }
+                    *slot.meta_mut() = meta;
+                    if l.record.inner_user_data != 0 {
+                        inner.insert(i as u32, l.record.inner_user_data);
+                    }
+                }
+            }
+            slots.push(slot);
+        }
+        let mut by_key = HashMap::with_capacity(image.keys.len());
+        for (key, index) in &image.keys {
+            let slot = slots
+                .get_mut(*index as usize)
+                .filter(|s| s.meta.load(Ordering::Relaxed) & LIVE != 0)
+                .ok_or_else(|| format!("key map: slot {index} is not a live record"))?;
+            let p = slot.packed.get_mut();
+            if (p.c1, p.c2) != (index_of(key.c1), index_of(key.c2)) {
+                return Err(format!("key map: slot {index} is not a record of its pair"));
+            }
+            if *slot.meta_mut() & KEYED != 0 {
+                return Err(format!("key map: slot {index} listed twice"));
+            }
+            *slot.meta_mut() |= KEYED;
+            if by_key.insert(*key, *index).is_some() {
+                return Err("key map: a key is listed twice".into());
+            }
+        }
+        Ok(ContactStore {
+            slots: RwLock::new(slots),
+            by_key: Mutex::new(by_key),
+            free: Mutex::new(free),
+            inner_used: AtomicBool::new(!inner.is_empty()),
+            inner_data: Mutex::new(inner),
+            next_generation: std::sync::atomic::AtomicU8::new(image.next_generation),
+        })
     }
 }
 
@@ -260,8 +683,33 @@ mod tests {
     }
 
     #[test]
-    fn record_is_76_bytes() {
-        assert!(std::mem::size_of::<ContactRecord>() <= 76);
+    fn a_slot_is_60_bytes() {
+        assert_eq!(std::mem::size_of::<Slot>(), 60);
+    }
+
+    #[test]
+    fn packing_keeps_the_record() {
+        let rec = ContactRecord {
+            force: Vector::new(1.5, -2.0, 3.25),
+            slide: 0.75,
+            limit: 0.4,
+            slip_speed: 0.5,
+            anchor1: Vector::new(0.1, 0.2, 0.3),
+            anchor2: Vector::new(-0.1, -0.2, -0.3),
+            inner_user_data: 0,
+            mean_normal_force: 9.81,
+            regime: 2,
+            anchored: true,
+        };
+        for regime in [0, 1, 2, u8::MAX, crate::hook::REGIME_RESET] {
+            let rec = ContactRecord { regime, ..rec };
+            let (p, slip) = pack(&rec, 3, 4);
+            let meta = with_state(LIVE, &rec);
+            assert_eq!(unpack(&p, slip, meta), rec);
+        }
+        // The slip speed keeps 8 significant bits.
+        let x = 0.123_456_f32;
+        assert!((from_bf16(to_bf16(x)) - x).abs() <= x / 128.0);
     }
 
     #[test]
@@ -270,16 +718,20 @@ mod tests {
         let (mut ud_a, mut ud_b) = (0u32, 0u32);
         assert!(store.with_record(&mut ud_a, &key(1, 2), 1, |_, new, _| new));
         assert!(store.with_record(&mut ud_b, &key(3, 4), 1, |_, new, _| new));
+        // Keep B below a third record so that sweeping B leaves a hole, not a cut tail.
+        let mut ud_d = 0;
+        store.with_record(&mut ud_d, &key(7, 8), 1, |_, _, _| ());
         store.with_record(&mut ud_a, &key(1, 2), 1, |r, new, _| {
             assert!(!new);
             r.inner_user_data = 7;
         });
-        // Step 2: only A is touched, B is swept.
+        // Step 2: A and D are touched, B is swept.
         store.with_record(&mut ud_a, &key(1, 2), 2, |r, _, _| {
             assert_eq!(r.inner_user_data, 7)
         });
+        store.with_record(&mut ud_d, &key(7, 8), 2, |_, _, _| ());
         store.sweep(2);
-        assert_eq!(store.len(), 1);
+        assert_eq!(store.len(), 2);
         // A new contact C takes B's slot; B's stale user_data must not reach it.
         let mut ud_c = 0;
         store.with_record(&mut ud_c, &key(5, 6), 3, |r, _, _| r.inner_user_data = 3);
@@ -289,16 +741,63 @@ mod tests {
             (new, r.inner_user_data)
         });
         assert_eq!(fresh, (true, 0));
-        // Cluster manifolds: user_data reset to 0 every step still finds the record.
+        // Cluster manifolds: user_data reset to 0 every step still finds the record (A left
+        // the key map when found through its user_data, so its key is gone: a new record).
         let mut ud = 0;
-        store.with_record(&mut ud, &key(1, 2), 3, |r, new, _| {
+        store.with_record(&mut ud, &key(5, 6), 3, |r, new, _| {
             assert!(!new);
-            assert_eq!(r.inner_user_data, 7);
+            assert_eq!(r.inner_user_data, 3);
         });
+        store.with_record(&mut ud_a, &key(1, 2), 3, |_, _, _| ());
+        store.with_record(&mut ud_d, &key(7, 8), 3, |_, _, _| ());
         store.sweep(3);
-        assert_eq!(store.len(), 3);
+        assert_eq!(store.len(), 4);
         store.sweep(4);
         assert_eq!(store.len(), 0);
-        assert_eq!(store.capacity(), 3);
+        // Everything was cut off the end: nothing left allocated for slots.
+        assert_eq!(store.capacity(), 0);
+    }
+
+    #[test]
+    fn shrinks_back_after_churn() {
+        let mut store = ContactStore::default();
+        let mut uds = vec![0u32; 10_000];
+        for (i, ud) in uds.iter_mut().enumerate() {
+            store.with_record(ud, &key(i as u32, 1_000_000), 1, |_, _, _| ());
+        }
+        let full = store.heap_bytes();
+        assert!(full >= 10_000 * 60, "{full}");
+        // Step 2: only the first 100 survive.
+        for (i, ud) in uds.iter_mut().enumerate().take(100) {
+            store.with_record(ud, &key(i as u32, 1_000_000), 2, |_, _, _| ());
+        }
+        store.sweep(2);
+        assert_eq!(store.len(), 100);
+        let after = store.heap_bytes();
+        assert!(
+            after <= 100 * 60 + 64 * 60 + 1024,
+            "{after} bytes for 100 contacts"
+        );
+    }
+
+    #[test]
+    fn images_round_trip() {
+        let mut store = ContactStore::default();
+        let mut uds = [0u32; 5];
+        for (i, ud) in uds.iter_mut().enumerate() {
+            store.with_record(ud, &key(i as u32, 9), 1, |r, _, _| {
+                r.slide = i as f32;
+                r.inner_user_data = i as u32;
+            });
+        }
+        for (i, ud) in uds.iter_mut().enumerate().skip(1).step_by(2) {
+            store.with_record(ud, &key(i as u32, 9), 2, |_, _, _| ());
+        }
+        store.sweep(2);
+        let image = store.image();
+        let mut back = ContactStore::from_image(&image).unwrap();
+        assert_eq!(back.image(), image);
+        assert_eq!(image.slots.iter().filter(|s| s.live.is_some()).count(), 2);
+        assert_eq!(back.len(), 2);
     }
 }

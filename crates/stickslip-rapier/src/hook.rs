@@ -171,7 +171,7 @@ impl<H: PhysicsHooks> PhysicsHooks for StickSlip<H> {
             let key = key(c1, c2, r.manifold);
             let mut user_data = 0;
             self.store
-                .with_record(&mut user_data, &key, self.clock.step, |rec, _, ours| {
+                .with_record(&mut user_data, &key, self.clock.mark(), |rec, _, ours| {
                     rec.inner_user_data = inner_data;
                     *r.user_data = ours;
                 });
@@ -179,7 +179,7 @@ impl<H: PhysicsHooks> PhysicsHooks for StickSlip<H> {
         }
         let key = key(c1, c2, rigid.manifold);
         let mut user_data = *rigid.user_data;
-        let step = self.clock.step;
+        let step = self.clock.mark();
         // The manifold's user_data is ours; the inner hook sees its own value.
         self.store
             .with_record(&mut user_data, &key, step, |rec, _, ours| {
@@ -492,12 +492,13 @@ fn in_plane_limit(
 pub(crate) fn report(
     m: &ContactManifold,
     rec: &ContactRecord,
+    (c1, c2): (ColliderHandle, ColliderHandle),
     bodies: &RigidBodySet,
     _colliders: &ColliderSet,
     dt: f64,
 ) -> ContactReport {
     if rec.regime == REGIME_RESET {
-        return reset_report(rec);
+        return reset_report(rec, c1, c2);
     }
     let meas = measure(m, dt);
     let n = m.data.normal;
@@ -511,8 +512,8 @@ pub(crate) fn report(
     let friction = basis.tangential(meas.mu) * -(meas.normal_force as f32);
     let f_n = meas.normal_force;
     let report = ContactReport {
-        collider1: rec.c1,
-        collider2: rec.c2,
+        collider1: c1,
+        collider2: c2,
         point: p.to_array(),
         normal: n.to_array(),
         regime: regime_of(rec.regime),
@@ -544,15 +545,15 @@ pub(crate) fn report(
     if numbers.iter().all(|x| x.is_finite()) && vectors.iter().flatten().all(|x| x.is_finite()) {
         report
     } else {
-        reset_report(rec)
+        reset_report(rec, c1, c2)
     }
 }
 
 /// The report of a contact whose inputs were not usable: zeros, flagged.
-fn reset_report(rec: &ContactRecord) -> ContactReport {
+fn reset_report(rec: &ContactRecord, c1: ColliderHandle, c2: ColliderHandle) -> ContactReport {
     ContactReport {
-        collider1: rec.c1,
-        collider2: rec.c2,
+        collider1: c1,
+        collider2: c2,
         point: [0.0; 3],
         normal: [0.0; 3],
         regime: Regime::Sticking,

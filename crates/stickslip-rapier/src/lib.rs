@@ -9,7 +9,7 @@
 //! use rapier3d::prelude::*;
 //! use stickslip_core::law::Law;
 //! use stickslip_core::sliding_curve::Curve;
-//! use stickslip_rapier::{FrictionMaterial, StickSlip};
+//! use stickslip_rapier::{FrictionMaterial, ReadBack, StickSlip};
 //!
 //! let mut world = PhysicsWorld::default();
 //! let ground = world.insert_collider(ColliderBuilder::cuboid(5.0, 0.1, 5.0), None);
@@ -19,7 +19,8 @@
 //! );
 //! // Elasto-plastic friction: c = 1e4 1/m, μ_ba = 0.5, μ_max = μ_ve = 0.55.
 //! let law = Law::elasto_plastic(1e4, 0.5, 0.55, Curve::constant(0.55).unwrap()).unwrap();
-//! let mut friction = StickSlip::new(FrictionMaterial::new(law));
+//! // Per-contact reports are opt-in (the friction is the same without them).
+//! let mut friction = StickSlip::new(FrictionMaterial::new(law)).with_read_back(ReadBack::Contacts);
 //! friction.attach(&mut world.colliders, ground, None);
 //! for _ in 0..60 {
 //!     friction.step(&mut world);
@@ -51,7 +52,9 @@ mod tangent;
 mod vibration;
 
 pub use material::FrictionMaterial;
-pub use modifier::{MAX_DT, MIN_DT, StickSlip, StickSlipConfig, valid_dt};
+pub use modifier::{
+    MAX_DT, MIN_DT, ReadBack, SWEEP_INTERVAL, StickSlip, StickSlipConfig, valid_dt,
+};
 pub use report::{ContactReport, WorldTotals};
 pub use snapshot::{SnapshotError, StickSlipSnapshot, WorldSnapshot};
 pub use vibration::{

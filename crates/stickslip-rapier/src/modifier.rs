@@ -1,6 +1,6 @@
 //! [`StickSlip`]: the contact modifier users add to their rapier world.
 
-use crate::collider_map::ColliderMap;
+use crate::collider_map::{ColliderBits, ColliderMap};
 use crate::contact_store::ContactStore;
 use crate::material::FrictionMaterial;
 use crate::report::{ContactReport, WorldTotals};
@@ -64,7 +64,38 @@ pub(crate) struct Clock {
     pub time: f64,
     pub dt: f64,
     pub step: u32,
+    /// Sweeps of the contact store so far; the hook marks the records it touches with the
+    /// next sweep's number.
+    pub sweeps: u32,
 }
+
+impl Clock {
+    /// The mark of records touched now (the number of the next sweep).
+    pub fn mark(&self) -> u32 {
+        self.sweeps.wrapping_add(1)
+    }
+}
+
+/// What [`StickSlip::end_step`] reads back from the solver after each step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub enum ReadBack {
+    /// Nothing: [`StickSlip::totals`] stays zero and [`StickSlip::reports`] empty, and the
+    /// end-of-step pass over the narrow phase (which also drops the state of vanished contacts
+    /// and keeps that of sleeping ones) runs only every [`SWEEP_INTERVAL`] steps. The
+    /// friction itself is the same in every mode; this is the cheapest (default).
+    #[default]
+    Off,
+    /// [`StickSlip::totals`] after every step (contacts by regime, forces, dissipated power
+    /// and energy).
+    Totals,
+    /// The totals and a [`ContactReport`] per contact manifold ([`StickSlip::reports`]), ~100
+    /// bytes a contact.
+    Contacts,
+}
+
+/// Steps between two sweeps of the contact store when nothing is read back
+/// ([`ReadBack::Off`]): the state of a vanished contact lingers at most this many steps.
+pub const SWEEP_INTERVAL: u32 = 8;
 
 /// The stickslip contact modifier: implements rapier's [`PhysicsHooks`], replacing plain
 /// Coulomb friction by a [`stickslip_core::law::Law`] per collider, with vibration sources,
@@ -79,10 +110,12 @@ pub struct StickSlip<H = ()> {
     pub(crate) materials: ColliderMap<FrictionMaterial>,
     pub(crate) vibrations: ColliderMap<VibrationSource>,
     /// Colliders whose hook flag `attach` turned on.
-    pub(crate) flagged: ColliderMap<()>,
+    pub(crate) flagged: ColliderBits,
     pub(crate) store: ContactStore,
     pub(crate) clock: Clock,
     pub(crate) inner: H,
+    /// What [`Self::end_step`] reads back (nothing by default).
+    pub(crate) read_back: ReadBack,
     pub(crate) reports: Vec<ContactReport>,
     pub(crate) totals: WorldTotals,
 }
@@ -102,13 +135,38 @@ impl<H: PhysicsHooks> StickSlip<H> {
             default_material: material.into(),
             materials: ColliderMap::default(),
             vibrations: ColliderMap::default(),
-            flagged: ColliderMap::default(),
+            flagged: ColliderBits::default(),
             store: ContactStore::default(),
             clock: Clock::default(),
             inner,
+            read_back: ReadBack::Off,
             reports: Vec::new(),
             totals: WorldTotals::default(),
         }
+    }
+
+    /// Sets what is read back after each step (builder form of [`Self::set_read_back`]).
+    pub fn with_read_back(mut self, read_back: ReadBack) -> Self {
+        self.set_read_back(read_back);
+        self
+    }
+
+    /// Sets what [`Self::end_step`] reads back: nothing (the default, cheapest), the world
+    /// [`Self::totals`], or the totals and a report per contact ([`Self::reports`]). The
+    /// friction is the same in every mode. Turning reports off frees their memory.
+    pub fn set_read_back(&mut self, read_back: ReadBack) {
+        self.read_back = read_back;
+        if read_back != ReadBack::Contacts {
+            self.reports = Vec::new();
+        }
+        if read_back == ReadBack::Off {
+            self.totals = WorldTotals::default();
+        }
+    }
+
+    /// What is read back after each step (see [`Self::set_read_back`]).
+    pub fn read_back(&self) -> ReadBack {
+        self.read_back
     }
 
     /// Replaces the tuning.
@@ -163,12 +221,14 @@ impl<H: PhysicsHooks> StickSlip<H> {
             return;
         }
         if let Some(c) = colliders.get_mut(collider) {
+            // Ours to turn off again in `detach` if we turn it on; a flag the user set stays.
+            // (The set keeps no generations: detach a collider before removing it, or a
+            // collider that reuses its index and has its own flag may lose it in `detach`.)
             if !c
                 .active_hooks()
                 .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
             {
-                // Ours to turn off again in `detach`.
-                self.flagged.insert(collider, ());
+                self.flagged.set(collider, true);
             }
             c.set_active_hooks(c.active_hooks() | ActiveHooks::MODIFY_SOLVER_CONTACTS);
         }
@@ -188,7 +248,8 @@ impl<H: PhysicsHooks> StickSlip<H> {
     /// hooks). Its contacts then behave exactly as in plain rapier.
     pub fn detach(&mut self, colliders: &mut ColliderSet, collider: ColliderHandle) {
         if let Some(c) = colliders.get_mut(collider) {
-            if self.flagged.remove(collider).is_some() {
+            if self.flagged.contains(collider) {
+                self.flagged.set(collider, false);
                 c.set_active_hooks(c.active_hooks() - ActiveHooks::MODIFY_SOLVER_CONTACTS);
             }
             // Without hooks rapier may recycle the pair's manifolds next step, keeping the
@@ -238,34 +299,48 @@ impl<H: PhysicsHooks> StickSlip<H> {
         self.clock.step = self.clock.step.wrapping_add(1);
     }
 
-    /// Call after each step: builds the reports and drops the state of contacts whose
-    /// manifold rapier no longer holds (rapier never says when one disappears).
+    /// Call after each step: sums the totals and builds the reports (as [`Self::read_back`]
+    /// asks) and drops the state of contacts whose manifold rapier no longer holds (rapier
+    /// never says when one disappears; with nothing read back, every [`SWEEP_INTERVAL`]
+    /// steps).
     pub fn end_step(
         &mut self,
         narrow_phase: &NarrowPhase,
         bodies: &RigidBodySet,
         colliders: &ColliderSet,
     ) {
-        self.reports.clear();
         let dt = self.clock.dt;
+        self.clock.time += dt;
+        let read_back = self.read_back;
+        if read_back == ReadBack::Off && !self.clock.step.is_multiple_of(SWEEP_INTERVAL) {
+            return;
+        }
+        self.reports.clear();
+        let mark = self.clock.mark();
         let mut totals = WorldTotals {
             dissipated_energy: self.totals.dissipated_energy,
             ..WorldTotals::default()
         };
         for pair in narrow_phase.contact_pairs() {
             for m in pair.solver_manifolds() {
-                let Some(rec) = self.store.touch(
-                    m.data.user_data,
-                    pair.collider1,
-                    pair.collider2,
-                    self.clock.step,
-                ) else {
+                // Marks the record alive (a sleeping pair's manifold keeps its state).
+                let Some(rec) =
+                    self.store
+                        .touch(m.data.user_data, pair.collider1, pair.collider2, mark)
+                else {
                     continue;
                 };
-                if m.data.solver_contacts.is_empty() || !(dt > 0.0) {
+                if read_back == ReadBack::Off || m.data.solver_contacts.is_empty() || !(dt > 0.0) {
                     continue;
                 }
-                let report = crate::hook::report(m, rec, bodies, colliders, dt);
+                let report = crate::hook::report(
+                    m,
+                    &rec,
+                    (pair.collider1, pair.collider2),
+                    bodies,
+                    colliders,
+                    dt,
+                );
                 totals.contacts += 1;
                 totals.reset += usize::from(report.reset);
                 match report.regime {
@@ -276,14 +351,18 @@ impl<H: PhysicsHooks> StickSlip<H> {
                 totals.normal_force += report.normal_force;
                 totals.friction_force += report.effective_mu() * report.normal_force;
                 totals.dissipated_power += report.dissipated_power;
-                self.reports.push(report);
+                if read_back == ReadBack::Contacts {
+                    self.reports.push(report);
+                }
             }
         }
         // Everything rapier no longer holds a manifold for goes now.
-        self.store.sweep(self.clock.step);
-        totals.dissipated_energy += totals.dissipated_power * dt;
-        self.totals = totals;
-        self.clock.time += dt;
+        self.store.sweep(mark);
+        self.clock.sweeps = mark;
+        if read_back != ReadBack::Off {
+            totals.dissipated_energy += totals.dissipated_power * dt;
+            self.totals = totals;
+        }
     }
 
     /// One step of `world` with this modifier (and no event handler of yours: pass one with
@@ -303,12 +382,15 @@ impl<H: PhysicsHooks> StickSlip<H> {
         self.end_step(&world.narrow_phase, &world.bodies, &world.colliders);
     }
 
-    /// Per-contact reports of the last step.
+    /// Per-contact reports of the last step: one per contact manifold with solver contacts,
+    /// in the narrow phase's order. Empty unless [`ReadBack::Contacts`] is set
+    /// ([`Self::set_read_back`]).
     pub fn reports(&self) -> &[ContactReport] {
         &self.reports
     }
 
-    /// World totals of the last step.
+    /// World totals of the last step (zero unless [`Self::read_back`] is
+    /// [`ReadBack::Totals`] or [`ReadBack::Contacts`]).
     pub fn totals(&self) -> WorldTotals {
         self.totals
     }
@@ -330,8 +412,13 @@ impl<H: PhysicsHooks> StickSlip<H> {
 
     /// Bytes of friction state kept per active contact manifold (the per-contact record:
     /// law state, stick anchors, bookkeeping).
-    pub const STATE_BYTES_PER_CONTACT: usize =
-        std::mem::size_of::<crate::contact_store::ContactRecord>();
+    pub const STATE_BYTES_PER_CONTACT: usize = std::mem::size_of::<crate::contact_store::Slot>();
+
+    /// Heap bytes of the contact state (slots, free list, key maps), capacity included; the
+    /// reports, when on, come on top.
+    pub fn state_heap_bytes(&mut self) -> usize {
+        self.store.heap_bytes()
+    }
 
     /// Slots allocated for contact state (live or reusable): memory tracks this.
     pub fn state_capacity(&mut self) -> usize {

@@ -204,7 +204,8 @@ impl PopovDrag {
         }
         .build();
         let law = Law::elasto_plastic(self.c, self.mu0, self.mu0, Curve::constant(self.mu0)?)?;
-        let mut modifier = crate::StickSlip::new(crate::FrictionMaterial::new(law));
+        let mut modifier = crate::StickSlip::new(crate::FrictionMaterial::new(law))
+            .with_read_back(crate::ReadBack::Contacts);
         modifier.attach(&mut scene.world.colliders, scene.ground, None);
         if let PopovDrive::Source(mode) = self.drive {
             let src = crate::VibrationSource::new(

@@ -61,23 +61,23 @@
 //! part is checked as far as rapier's own deserialization checks it; a panic inside it is
 //! caught and returned as [`SnapshotError::Decode`].
 
-use crate::collider_map::ColliderMap;
-use crate::contact_store::{ContactKey, ContactRecord, ContactStore, INDEX_BITS, Slot, lock};
+use crate::collider_map::{ColliderBits, ColliderMap};
+use crate::contact_store::{
+    ContactKey, ContactRecord, ContactStore, INDEX_BITS, LiveImage, SlotImage, StoreImage,
+};
 use crate::material::FrictionMaterial;
-use crate::modifier::{Clock, StickSlip, StickSlipConfig};
+use crate::modifier::{Clock, ReadBack, StickSlip, StickSlipConfig};
 use crate::report::{ContactReport, WorldTotals};
 use crate::vibration::{Amplitude, VibrationDirection, VibrationMode, VibrationSource};
 use rapier3d::prelude::*;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
-use std::collections::HashMap;
 use std::io::{Read, Write};
-use std::sync::{Mutex, RwLock};
 use stickslip_core::ParamError;
 use stickslip_core::law::Regime;
 use stickslip_core::waveform::Waveform;
 
 /// Version of the snapshot format written by this build (and the only one it reads).
-pub const FORMAT_VERSION: u32 = 1;
+pub const FORMAT_VERSION: u32 = 2;
 
 const MAGIC: [u8; 8] = *b"STKSLIP\0";
 /// Header kind of a [`StickSlipSnapshot`] file.
@@ -249,8 +249,9 @@ impl VibrationSnapshot {
 /// One contact's friction state.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 struct RecordSnapshot {
-    c1: Handle,
-    c2: Handle,
+    /// Arena indices of the pair's colliders.
+    c1: u32,
+    c2: u32,
     force: [f32; 3],
     slide: f32,
     limit: f32,
@@ -259,16 +260,18 @@ struct RecordSnapshot {
     anchor2: [f32; 3],
     inner_user_data: u32,
     mean_normal_force: f32,
-    touched: u16,
+    /// Parity of the step that last touched it.
+    touched_odd: bool,
     regime: u8,
     anchored: bool,
 }
 
-impl From<&ContactRecord> for RecordSnapshot {
-    fn from(r: &ContactRecord) -> Self {
+impl From<&LiveImage> for RecordSnapshot {
+    fn from(l: &LiveImage) -> Self {
+        let r = &l.record;
         RecordSnapshot {
-            c1: r.c1.into(),
-            c2: r.c2.into(),
+            c1: l.c1,
+            c2: l.c2,
             force: r.force.to_array(),
             slide: r.slide,
             limit: r.limit,
@@ -277,7 +280,7 @@ impl From<&ContactRecord> for RecordSnapshot {
             anchor2: r.anchor2.to_array(),
             inner_user_data: r.inner_user_data,
             mean_normal_force: r.mean_normal_force,
-            touched: r.touched,
+            touched_odd: l.touched_odd,
             regime: r.regime,
             anchored: r.anchored,
         }
@@ -285,7 +288,7 @@ impl From<&ContactRecord> for RecordSnapshot {
 }
 
 impl RecordSnapshot {
-    fn to_record(&self) -> Result<ContactRecord, SnapshotError> {
+    fn to_live(&self) -> Result<LiveImage, SnapshotError> {
         let finite = self
             .force
             .iter()
@@ -313,20 +316,22 @@ impl RecordSnapshot {
                 format!("unknown regime code {}", self.regime),
             ));
         }
-        Ok(ContactRecord {
-            c1: self.c1.into(),
-            c2: self.c2.into(),
-            force: Vector::from_array(self.force),
-            slide: self.slide,
-            limit: self.limit,
-            slip_speed: self.slip_speed,
-            anchor1: Vector::from_array(self.anchor1),
-            anchor2: Vector::from_array(self.anchor2),
-            inner_user_data: self.inner_user_data,
-            mean_normal_force: self.mean_normal_force,
-            touched: self.touched,
-            regime: self.regime,
-            anchored: self.anchored,
+        Ok(LiveImage {
+            c1: self.c1,
+            c2: self.c2,
+            touched_odd: self.touched_odd,
+            record: ContactRecord {
+                force: Vector::from_array(self.force),
+                slide: self.slide,
+                limit: self.limit,
+                slip_speed: self.slip_speed,
+                anchor1: Vector::from_array(self.anchor1),
+                anchor2: Vector::from_array(self.anchor2),
+                inner_user_data: self.inner_user_data,
+                mean_normal_force: self.mean_normal_force,
+                regime: self.regime,
+                anchored: self.anchored,
+            },
         })
     }
 }
@@ -348,119 +353,75 @@ struct KeySnapshot {
     slot: u32,
 }
 
-/// The contact store, exactly: slots in order, the key map, and the free list in pop order.
+/// The contact store, exactly: slots in order (free ones are taken lowest first), the key
+/// map, and the generation of the next slot to be added.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 struct ContactsSnapshot {
     slots: Vec<SlotSnapshot>,
     keys: Vec<KeySnapshot>,
-    free: Vec<u32>,
+    next_generation: u8,
 }
 
 impl From<&ContactStore> for ContactsSnapshot {
     fn from(store: &ContactStore) -> Self {
-        let slots = store.slots.read().unwrap_or_else(|e| e.into_inner());
-        let slots = slots
-            .iter()
-            .map(|s| {
-                let s = lock(s);
-                SlotSnapshot {
-                    generation: s.generation,
-                    record: s.live.then(|| RecordSnapshot::from(&s.record)),
-                }
-            })
-            .collect();
-        let mut keys: Vec<KeySnapshot> = lock(&store.by_key)
-            .iter()
-            .map(|(k, &slot)| KeySnapshot {
-                c1: k.c1.into(),
-                c2: k.c2.into(),
-                features: k.features,
-                slot,
-            })
-            .collect();
-        // The map's order never matters; sorted, equal states give equal bytes.
-        keys.sort_by_key(|k| (k.c1, k.c2, k.features, k.slot));
+        let image = store.image();
         ContactsSnapshot {
-            slots,
-            keys,
-            free: lock(&store.free).clone(),
+            slots: image
+                .slots
+                .iter()
+                .map(|s| SlotSnapshot {
+                    generation: s.generation,
+                    record: s.live.as_ref().map(RecordSnapshot::from),
+                })
+                .collect(),
+            keys: image
+                .keys
+                .iter()
+                .map(|(k, slot)| KeySnapshot {
+                    c1: k.c1.into(),
+                    c2: k.c2.into(),
+                    features: k.features,
+                    slot: *slot,
+                })
+                .collect(),
+            next_generation: image.next_generation,
         }
     }
 }
 
 impl ContactsSnapshot {
     fn to_store(&self) -> Result<ContactStore, SnapshotError> {
-        let n = self.slots.len();
         // Encoded user_data holds slot index + 1 in INDEX_BITS bits.
+        let n = self.slots.len();
         if n >= (1usize << INDEX_BITS) {
             return Err(invalid("contact store", format!("{n} slots")));
         }
-        let unused = ContactKey {
-            c1: ColliderHandle::invalid(),
-            c2: ColliderHandle::invalid(),
-            features: 0,
-        };
         let mut slots = Vec::with_capacity(n);
         for s in &self.slots {
-            let (live, record) = match &s.record {
-                Some(r) => (true, r.to_record()?),
-                None => (false, ContactRecord::new(&unused)),
-            };
-            slots.push(Mutex::new(Slot {
+            slots.push(SlotImage {
                 generation: s.generation,
-                live,
-                record,
-            }));
+                live: s.record.as_ref().map(|r| r.to_live()).transpose()?,
+            });
         }
-        let is_live = |i: u32| self.slots.get(i as usize).map(|s| s.record.is_some());
-        // The free list is exactly the free slots, each once.
-        let mut seen = vec![false; n];
-        for &i in &self.free {
-            match is_live(i) {
-                None => return Err(invalid("free list", format!("slot {i} of {n}"))),
-                Some(true) => return Err(invalid("free list", format!("slot {i} is live"))),
-                Some(false) if seen[i as usize] => {
-                    return Err(invalid("free list", format!("slot {i} listed twice")));
-                }
-                Some(false) => seen[i as usize] = true,
-            }
-        }
-        let free_slots = self.slots.iter().filter(|s| s.record.is_none()).count();
-        if free_slots != self.free.len() {
-            return Err(invalid(
-                "free list",
-                format!("{} entries for {free_slots} free slots", self.free.len()),
-            ));
-        }
-        let mut by_key = HashMap::with_capacity(self.keys.len());
-        for k in &self.keys {
-            let key = ContactKey {
-                c1: k.c1.into(),
-                c2: k.c2.into(),
-                features: k.features,
-            };
-            let record = self
-                .slots
-                .get(k.slot as usize)
-                .and_then(|s| s.record.as_ref());
-            match record {
-                Some(r) if r.c1 == k.c1 && r.c2 == k.c2 => {}
-                _ => {
-                    return Err(invalid(
-                        "contact key map",
-                        format!("slot {} is not a live record of its pair", k.slot),
-                    ));
-                }
-            }
-            if by_key.insert(key, k.slot).is_some() {
-                return Err(invalid("contact key map", "a key is listed twice"));
-            }
-        }
-        Ok(ContactStore {
-            slots: RwLock::new(slots),
-            by_key: Mutex::new(by_key),
-            free: Mutex::new(self.free.clone()),
-        })
+        let image = StoreImage {
+            slots,
+            keys: self
+                .keys
+                .iter()
+                .map(|k| {
+                    (
+                        ContactKey {
+                            c1: k.c1.into(),
+                            c2: k.c2.into(),
+                            features: k.features,
+                        },
+                        k.slot,
+                    )
+                })
+                .collect(),
+            next_generation: self.next_generation,
+        };
+        ContactStore::from_image(&image).map_err(|e| invalid("contact store", e))
     }
 }
 
@@ -470,6 +431,7 @@ struct ClockSnapshot {
     time: f64,
     dt: f64,
     step: u32,
+    sweeps: u32,
 }
 
 /// World totals of the last step.
@@ -572,10 +534,12 @@ pub struct StickSlipSnapshot {
     default_material: FrictionMaterial,
     materials: Vec<Entry<FrictionMaterial>>,
     vibrations: Vec<Entry<VibrationSnapshot>>,
-    flagged: Vec<Handle>,
+    /// Arena indices of the colliders whose hook flag the modifier turned on.
+    flagged: Vec<u32>,
     contacts: ContactsSnapshot,
     clock: ClockSnapshot,
     totals: TotalsSnapshot,
+    read_back: ReadBack,
     reports: Vec<ReportSnapshot>,
 }
 
@@ -652,12 +616,13 @@ impl<H> StickSlip<H> {
                     value: s.into(),
                 })
                 .collect(),
-            flagged: self.flagged.iter().map(|(h, _)| h.into()).collect(),
+            flagged: self.flagged.indices().collect(),
             contacts: (&self.store).into(),
             clock: ClockSnapshot {
                 time: self.clock.time,
                 dt: self.clock.dt,
                 step: self.clock.step,
+                sweeps: self.clock.sweeps,
             },
             totals: TotalsSnapshot {
                 contacts: t.contacts as u64,
@@ -670,6 +635,7 @@ impl<H> StickSlip<H> {
                 dissipated_energy: t.dissipated_energy,
                 reset: t.reset as u64,
             },
+            read_back: self.read_back,
             reports: self.reports.iter().map(ReportSnapshot::from).collect(),
         }
     }
@@ -699,15 +665,16 @@ impl<H> StickSlip<H> {
                 source,
             })
         })?;
-        let flagged_entries: Vec<Entry<()>> = s
-            .flagged
-            .iter()
-            .map(|&collider| Entry {
-                collider,
-                value: (),
-            })
-            .collect();
-        let flagged = restore_map("hook flags", &flagged_entries, colliders, |_| Ok(()))?;
+        let mut flagged = ColliderBits::default();
+        for (k, &i) in s.flagged.iter().enumerate() {
+            if k > 0 && s.flagged[k - 1] >= i {
+                return Err(invalid("hook flags", "indices not increasing"));
+            }
+            // Only colliders of the set size the bit set; others can never be stepped.
+            if let Some((_, handle)) = colliders.get_unknown_gen(i) {
+                flagged.set(handle, true);
+            }
+        }
         let store = s.contacts.to_store()?;
         let c = s.clock;
         if !(c.time.is_finite() && c.dt.is_finite() && c.dt >= 0.0) {
@@ -753,8 +720,10 @@ impl<H> StickSlip<H> {
                 time: c.time,
                 dt: c.dt,
                 step: c.step,
+                sweeps: c.sweeps,
             },
             inner,
+            read_back: s.read_back,
             reports,
             totals,
         })

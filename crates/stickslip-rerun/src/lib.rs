@@ -310,7 +310,9 @@ impl RerunLogger {
     }
 
     /// Logs the state after `step` steps (the time is the modifier's simulated time) if `step`
-    /// is a multiple of [`LogOptions::every`]; returns whether it logged.
+    /// is a multiple of [`LogOptions::every`]; returns whether it logged. Contacts are logged
+    /// from the modifier's per-contact reports: turn them on with
+    /// [`StickSlip::set_contact_reports`] (the world totals are logged either way).
     pub fn log_step<H: PhysicsHooks>(
         &mut self,
         step: u64,

@@ -314,7 +314,8 @@ fn balls_and_meshes_are_logged_as_such() {
     );
     let mut friction = StickSlip::new(FrictionMaterial::new(Law::Coulomb(
         Coulomb::new(0.5).unwrap(),
-    )));
+    )))
+    .with_read_back(stickslip_rapier::ReadBack::Contacts);
     friction.attach(&mut world.colliders, gc, None);
     let (rec, memory) = stickslip_rerun::open("shapes", &Sink::Memory).unwrap();
     let mut logger = RerunLogger::new(rec, LogOptions::default());

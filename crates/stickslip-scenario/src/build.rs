@@ -670,7 +670,9 @@ impl Scenario {
                 })?),
             },
         };
+        // The runner, its rerun logging and the bevy scenario view read every contact.
         let mut stickslip = StickSlip::new(FrictionMaterial::new(default_material))
+            .with_read_back(stickslip_rapier::ReadBack::Contacts)
             .with_config(self.config()?)
             .map_err(|source| BuildError::Param {
                 field: "stickslip".into(),
