@@ -40,6 +40,8 @@ const QUAD_ORDER: NonZeroUsize = NonZeroUsize::new(16).unwrap();
 const QUAD_PANEL: f64 = 1.0 / 32.0;
 /// Disc radius (scaled) below which the contact counts as lost.
 const R_LOST: f64 = 1e-12;
+/// Disc radius (scaled) below which a contact just regained counts as regained continuously.
+const ONSET_RADIUS: f64 = 1e-9;
 /// Relative distance to the disc's rim at which a force counts as on it.
 const ON_RIM: f64 = 1e-12;
 /// Smallest step of a stick or slip phase, so that every event makes progress.
@@ -108,6 +110,7 @@ struct Sums {
     fy: f64,
     radius: f64,
     stick: f64,
+    /// Whether the period left pure stick (slipped or lost contact).
     slipped: bool,
 }
 
@@ -409,7 +412,9 @@ impl<'a> Orbit<'a> {
             return ([0.0, 0.0], Mode::Lost);
         }
         let norm = f[0].hypot(f[1]);
-        if norm == 0.0 && from_lost {
+        // A disc that reopens continuously is still tiny here; one that jumps open holds the
+        // relaxed spring inside it.
+        if norm == 0.0 && from_lost && r < ONSET_RADIUS {
             let w = self.rate(p, x);
             let speed = w[0].hypot(w[1]);
             if speed > self.radius_rate(p, x) && speed > 0.0 {
@@ -592,6 +597,8 @@ impl<'a> Orbit<'a> {
 
     /// Lost contact from `x0`: F = 0 until the disc reopens.
     fn lost(&self, p: &Piece, x0: f64, sums: &mut Sums) -> (f64, [f64; 2], Mode) {
+        // Losing contact relaxes the spring: like a slip, it ends any pure-stick period.
+        sums.slipped = true;
         let alive = |x: f64| self.radius(p, x) - R_LOST;
         let mut prev = x0;
         for t in grid(x0, p.b) {
