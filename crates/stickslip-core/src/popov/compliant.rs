@@ -23,6 +23,9 @@ use crate::error::{ParamError, coefficient, finite, in_range, positive};
 /// small enough that no product in the orbit overflows.
 pub const MAX_SCALED: f64 = 1e9;
 
+/// Mean force ratio below which [`CompliantStaticFriction::drive`] reports no drive.
+pub const DRIVE_TOLERANCE: f64 = 1e-9;
+
 /// The seed's contact spring: tangential stiffness k_x, normal stiffness k_z, Amontons μ0 at
 /// the contact point, mean indentation ū_z.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -187,12 +190,13 @@ pub struct CompliantStaticFriction {
 }
 
 impl CompliantStaticFriction {
-    /// The holding force ratio of least magnitude: 0 if the contact can rest without one,
-    /// else the end of the band nearest zero (the sign says which way it is driven).
+    /// The holding force ratio of least magnitude: 0 if the contact can rest without one
+    /// (within [`DRIVE_TOLERANCE`], so round-off in a symmetric band is no drive), else the
+    /// end of the band nearest zero (the sign says which way it is driven).
     pub fn drive(&self) -> f64 {
-        if self.upper < 0.0 {
+        if self.upper < -DRIVE_TOLERANCE {
             self.upper
-        } else if self.lower > 0.0 {
+        } else if self.lower > DRIVE_TOLERANCE {
             self.lower
         } else {
             0.0

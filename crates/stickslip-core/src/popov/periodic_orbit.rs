@@ -284,23 +284,28 @@ impl<'a> Orbit<'a> {
         };
         // Start saturated on the side of the drag: forward slip.
         let mut f_in = [side * self.radius(&p0, p0.a), 0.0];
+        if self.drift == 0.0 {
+            // At rest, if some offset of the force sticks throughout, every such offset is a
+            // steady state; the limit v0 → 0± is the band's furthest point on that side
+            // (across the drag the rim's slips steer the offset there).
+            let (dy, margin) = self.best_offset(f_in, side);
+            let centred = [f_in[0], f_in[1] + dy];
+            // Sticking needs room on both sides: the band [−m₋, m₊] around f_in is nonempty.
+            if margin + self.stick_margin(centred, -side) >= 0.0 {
+                let touching = [f_in[0] + side * margin, f_in[1] + dy];
+                let (_, sums) = self.run_period(touching)?;
+                return Ok(self.averages(sums, 1));
+            }
+        }
         for period in 1..=MAX_PERIODS {
             let (f_out, sums) = self.run_period(f_in)?;
             let change = (f_out[0] - f_in[0]).hypot(f_out[1] - f_in[1]);
-            if !sums.slipped {
-                if self.drift == 0.0 {
-                    // Pure stick at rest: every shift inside the admissible band is a steady
-                    // state; the limit v0 → 0± touches the band's edge on that side.
-                    let shift = side * self.stick_margin(f_in, side);
-                    let touching = [f_in[0] + shift, f_in[1]];
-                    let (_, sums) = self.run_period(touching)?;
-                    return Ok(self.averages(sums, period + 1));
-                }
+            if !sums.slipped && self.drift != 0.0 {
                 // Drifting in stick: the state moves by d per period until it touches; skip
-                // to the period in which it does.
-                let margin = self.stick_margin(f_in, side);
-                let skip = ((margin / self.drift.abs()).ceil() - 1.0).max(0.0);
-                f_in = [f_out[0] + skip * self.drift, f_out[1]];
+                // to the period in which it does, at the offset across the drag it tends to.
+                let (dy, margin) = self.best_offset(f_in, side);
+                let skip = ((margin.max(0.0) / self.drift.abs()).ceil() - 1.0).max(0.0);
+                f_in = [f_out[0] + skip * self.drift, f_out[1] + dy];
                 continue;
             }
             if change <= PERIODIC_TOL {
@@ -321,8 +326,29 @@ impl<'a> Orbit<'a> {
         }
     }
 
-    /// The largest shift s ≥ 0 along `side`·x that keeps the pure-stick trajectory from `f_in`
-    /// inside the disc: min over the period of √(R² − F_y²) − side·F_x.
+    /// The offset across the drag and the shift along `side`·x that take the pure-stick
+    /// trajectory from `f_in` to the band's furthest point along `side`·x: (Δy, shift), the
+    /// shift negative if that point lies behind `f_in`. Without a transverse component
+    /// Δy = 0.
+    fn best_offset(&self, f_in: [f64; 2], side: f64) -> (f64, f64) {
+        if !self.planar {
+            return (0.0, self.stick_margin(f_in, side));
+        }
+        // The margin is quasi-concave in Δy (a minimum of unimodal terms): golden section
+        // over every offset that could fit in the largest disc.
+        let max_of = |c: usize| self.comps[c].map_or(0.0, |o| o.waveform().max_value());
+        let span = 2.0 * (1.0 + self.alpha * max_of(0) + self.a_y * (1.0 + max_of(2)));
+        let (dy, neg) = golden_min(
+            |dy| -self.stick_margin([f_in[0], f_in[1] + dy], side),
+            -span,
+            span,
+        );
+        (dy, -neg)
+    }
+
+    /// The largest shift along `side`·x that keeps the pure-stick trajectory from `f_in`
+    /// inside the disc: min over the period of √(R² − F_y²) − side·F_x, with the root signed
+    /// (negative where |F_y| > R) so the margin falls off on both sides of the band.
     fn stick_margin(&self, f_in: [f64; 2], side: f64) -> f64 {
         // X, Y at φ = 0−, the left limit the period map starts from.
         let last = self.pieces[self.pieces.len() - 1];
@@ -335,7 +361,8 @@ impl<'a> Orbit<'a> {
                 let fx = f_in[0] + b[0] - origin[0];
                 let fy = f_in[1] + b[1] - origin[1];
                 let r = self.radius(p, x);
-                (r * r - fy * fy).max(0.0).sqrt() - side * fx
+                let room = r * r - fy * fy;
+                room.signum() * room.abs().sqrt() - side * fx
             };
             let mut prev = p.a;
             let mut prev_m = m(p.a);
@@ -354,7 +381,7 @@ impl<'a> Orbit<'a> {
                 prev_m = mt;
             }
         }
-        best.max(0.0)
+        best
     }
 
     /// One period from the state `f_in` at φ = 0− (before the jumps at 0).
