@@ -292,7 +292,10 @@ fn tangential_oscillation_covers_all_three_sliding_modes() {
     let pure = steady_sliding(&c, &ex, 1.0, 1.01 * TAU * a).unwrap();
     assert!((pure.mu_eff - c.mu0()).abs() < 1e-12 && pure.stick_fraction == 0.0);
     let simple = steady_sliding(&c, &ex, 1.0, 0.9 * TAU * a).unwrap();
-    assert!(simple.mu_eff < c.mu0() && simple.stick_fraction > 0.0, "{simple:?}");
+    assert!(
+        simple.mu_eff < c.mu0() && simple.stick_fraction > 0.0,
+        "{simple:?}"
+    );
     let big = Excitation::tangential(Oscillation::new(3.0 * len, Waveform::Sine, 0.0).unwrap());
     let multiple = steady_sliding(&c, &big, 1.0, 0.1 * c.speed_scale(1.0)).unwrap();
     // In place, a reversing slip leaves μ̄ far below μ0 and the stick shares the period.
@@ -300,7 +303,10 @@ fn tangential_oscillation_covers_all_three_sliding_modes() {
         multiple.mu_eff < 0.2 * c.mu0() && (0.2..0.8).contains(&multiple.stick_fraction),
         "{multiple:?}"
     );
-    for (s, v0) in [(simple, 0.9 * TAU * a), (multiple, 0.1 * c.speed_scale(1.0))] {
+    for (s, v0) in [
+        (simple, 0.9 * TAU * a),
+        (multiple, 0.1 * c.speed_scale(1.0)),
+    ] {
         let e = if s == simple { &ex } else { &big };
         let sim = stepped(&c, e, v0);
         assert!((s.mu_eff - sim).abs() < 1e-2 * s.mu_eff, "{s:?} vs {sim}");
@@ -327,7 +333,10 @@ fn elliptical_vibration_drives_the_contact_and_reverses_with_the_phase_shift() {
         let v = free_drive_velocity(&c, &ex, f)
             .unwrap()
             .expect("elliptical vibration transports");
-        assert!(v != 0.0 && block != 0.0 && v.signum() == -block.signum(), "{v} {block}");
+        assert!(
+            v != 0.0 && block != 0.0 && v.signum() == -block.signum(),
+            "{v} {block}"
+        );
         // Zero mean force at the drive velocity, in the theory and in the time-stepper.
         let at_v = mean_friction(&c, &ex, f, v).unwrap();
         assert!(at_v.abs() < 1e-8, "{at_v}");
@@ -346,7 +355,10 @@ fn elliptical_vibration_drives_the_contact_and_reverses_with_the_phase_shift() {
         speeds.push(v);
     }
     assert!(speeds[0] * speeds[1] < 0.0, "{speeds:?}");
-    assert!((speeds[0] + speeds[1]).abs() < 1e-6 * speeds[0].abs(), "{speeds:?}");
+    assert!(
+        (speeds[0] + speeds[1]).abs() < 1e-6 * speeds[0].abs(),
+        "{speeds:?}"
+    );
     // The drive velocity scales with the frequency (the model is rate-independent).
     let v2 = free_drive_velocity(&c, &elliptical(&c, 0.25), 2.0 * f)
         .unwrap()

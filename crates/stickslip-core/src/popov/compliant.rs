@@ -125,8 +125,14 @@ pub(crate) fn scaled(
             "normal amplitude / mean indentation",
             amp(&excitation.normal) / contact.mean_indentation,
         )?,
-        a_x: bounded("tangential amplitude / slip length", amp(&excitation.tangential) / len)?,
-        a_y: bounded("transverse amplitude / slip length", amp(&excitation.transverse) / len)?,
+        a_x: bounded(
+            "tangential amplitude / slip length",
+            amp(&excitation.tangential) / len,
+        )?,
+        a_y: bounded(
+            "transverse amplitude / slip length",
+            amp(&excitation.transverse) / len,
+        )?,
         drift: bounded("v0 / (slip length · frequency)", v0 / (len * frequency))?,
     })
 }
@@ -250,7 +256,10 @@ mod tests {
         assert!((mean_friction(&contact(), &ex, 1.0, 0.3).unwrap() - 0.5).abs() < 1e-12);
         assert!((mean_friction(&contact(), &ex, 1.0, -0.3).unwrap() + 0.5).abs() < 1e-12);
         let s = static_friction_compliant(&contact(), &ex).unwrap();
-        assert!((s.upper - 0.5).abs() < 1e-12 && (s.lower + 0.5).abs() < 1e-12, "{s:?}");
+        assert!(
+            (s.upper - 0.5).abs() < 1e-12 && (s.lower + 0.5).abs() < 1e-12,
+            "{s:?}"
+        );
         assert_eq!(s.drive(), 0.0);
     }
 

@@ -242,7 +242,11 @@ impl<'a> Orbit<'a> {
     fn dg(&self, p: &Piece, c: usize, x: f64) -> f64 {
         let Some(o) = self.comps[c] else { return 0.0 };
         // At the end, the slope of the piece, read just inside it.
-        let x = if x >= p.b { p.b - 1e-9 * (p.b - p.a) } else { x };
+        let x = if x >= p.b {
+            p.b - 1e-9 * (p.b - p.a)
+        } else {
+            x
+        };
         o.waveform().slope(x + o.phase())
     }
 
@@ -313,7 +317,10 @@ impl<'a> Orbit<'a> {
             }
             f_in = f_out;
         }
-        Err(no_convergence("periods to the periodic steady state", MAX_PERIODS))
+        Err(no_convergence(
+            "periods to the periodic steady state",
+            MAX_PERIODS,
+        ))
     }
 
     fn averages(&self, sums: Sums, periods: usize) -> OrbitAverages {
@@ -581,7 +588,10 @@ impl<'a> Orbit<'a> {
     ) -> Result<(f64, [f64; 2], Mode), ParamError> {
         sums.slipped = true;
         let theta0 = f0[1].atan2(f0[0]);
-        let arc = PlanarSlip { orbit: self, piece: p };
+        let arc = PlanarSlip {
+            orbit: self,
+            piece: p,
+        };
         if arc.push(x0, theta0) < 0.0 {
             return Ok((x0, f0, Mode::Stick));
         }
@@ -599,7 +609,10 @@ impl<'a> Orbit<'a> {
             .solve()
             .map_err(|_| no_convergence("in-plane slip integration steps", ODE_MAX_STEPS))?;
         let (Some(&end), Some(y)) = (sol.t.last(), sol.y.last()) else {
-            return Err(no_convergence("in-plane slip integration steps", ODE_MAX_STEPS));
+            return Err(no_convergence(
+                "in-plane slip integration steps",
+                ODE_MAX_STEPS,
+            ));
         };
         let end = end.clamp(x0, p.b);
         sums.fx += y[1];
