@@ -696,3 +696,37 @@ impl Event<f64, [f64; 3]> for PlanarSlip<'_, '_> {
         self.push(x, y[0]).min(r - 2.0 * R_LOST)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::waveform::Waveform;
+
+    #[test]
+    fn creeping_settles_at_the_eq_6_edge_in_a_few_periods() {
+        // a_x = 0.5 slip lengths at d = 1e-4: one slip per period at the turning point of the
+        // base; the force sits at the Eq. 6 edge 1 − a_x, reached from the saturated start
+        // at once (the slip fixes the state along one axis).
+        let ex = Excitation::tangential(Oscillation::new(1.0, Waveform::Sine, 0.3).unwrap());
+        let avg = Orbit::new(&ex, 0.0, 0.5, 0.0, 1e-4, 1.0).solve().unwrap();
+        assert!(avg.periods < 10, "{avg:?}");
+        assert!(
+            (avg.fx - 0.5).abs() < 1e-3 && (avg.radius - 1.0).abs() < 1e-12,
+            "{avg:?}"
+        );
+    }
+
+    #[test]
+    fn lost_contact_carries_no_force() {
+        // α = 3: the disc is closed for part of every period; F = 0 there, and the mean
+        // normal force ⟨(1 + α g)⁺⟩ exceeds 1.
+        let ex = Excitation {
+            normal: Some(Oscillation::new(1.0, Waveform::Sine, 0.0).unwrap()),
+            tangential: Some(Oscillation::new(1.0, Waveform::Sine, 0.25).unwrap()),
+            transverse: Some(Oscillation::new(1.0, Waveform::Sine, 0.5).unwrap()),
+        };
+        let avg = Orbit::new(&ex, 3.0, 0.7, 0.4, 0.5, 1.0).solve().unwrap();
+        assert!(avg.radius > 1.0 && avg.fx.abs() <= avg.radius, "{avg:?}");
+        assert!(avg.fx.is_finite() && avg.fy.is_finite());
+    }
+}
