@@ -60,6 +60,15 @@ pub enum ParamError {
         /// μ_ve(0+).
         mu_ve0: f64,
     },
+    /// A numerical solution did not settle within its bound (iterations, steps or events);
+    /// the parameters lie in a regime the solver cannot resolve.
+    #[error("`{name}` exceeded its limit of {limit} without converging")]
+    NoConvergence {
+        /// What was counted.
+        name: &'static str,
+        /// The bound that was reached.
+        limit: usize,
+    },
     /// A sampled table is malformed.
     #[error("table `{name}`: {reason}")]
     BadTable {

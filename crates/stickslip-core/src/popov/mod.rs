@@ -9,15 +9,30 @@
 //! - [`spring_model`]: a time-stepped simulator of the spring contact that yields μ̄ directly,
 //!   also for tangential and transverse oscillation where the seed has no closed form.
 //! - [`oscillation`]: the excitation A·w(ft + phase) in each direction.
+//! - [`compliant`]: the compliant contact under superimposed oscillation (normal, tangential
+//!   and transverse at once, any waveforms and phases): μ̄(v0) in every sliding mode and the
+//!   static friction band at rest, from the exact event-driven periodic orbit of the model
+//!   (stick in closed form, slip on the friction circle, event roots, period-map fixed point),
+//!   checked against [`spring_model`].
+//! - [`drive`]: self-transport under superimposed oscillation: blocking force and free drive
+//!   velocity.
 
+pub mod compliant;
 pub mod dimensionless;
+pub mod drive;
 pub(crate) mod numeric;
 pub mod oscillation;
+pub(crate) mod periodic_orbit;
 pub mod psi;
 pub mod spring_model;
 pub mod static_friction;
 
+pub use compliant::{
+    CompliantContact, CompliantStaticFriction, SteadySliding, mean_friction,
+    static_friction_compliant, steady_sliding,
+};
 pub use dimensionless::{alpha, beta_from_force, beta_from_springs, mu_eff};
+pub use drive::{blocking_force, free_drive_velocity};
 pub use oscillation::{Excitation, Oscillation};
 pub use psi::{StickEvent, psi, psi_closed_form, psi_sine_eq37, psi_sine_eq38, stick_events};
 pub use spring_model::{SimulationOptions, SpringModel, SpringModelOutcome};

@@ -10,8 +10,9 @@
 //! relative to the substrate) and a corrector (slip: the force is projected back onto the disc
 //! of radius μ0 F_z). It uses none of the closed forms, so it checks them.
 
+use super::compliant::CompliantContact;
 use super::oscillation::{Excitation, Oscillation};
-use crate::error::{ParamError, non_negative, positive};
+use crate::error::{ParamError, finite, non_negative, positive};
 
 /// Change of the in-plane force over one period, relative to μ0 k_z ū_z, below which the
 /// motion counts as periodic.
@@ -122,6 +123,26 @@ impl SpringModel {
         })
     }
 
+    /// The same simulator for a [`CompliantContact`] dragged at a *signed* speed `v0` along x
+    /// (negative: towards −x; the warm-up then starts in backward slip), to check the theory
+    /// of [`compliant`](super::compliant) under superimposed `excitation` (displacements).
+    pub fn compliant(
+        contact: &CompliantContact,
+        v0: f64,
+        frequency: f64,
+        excitation: Excitation,
+    ) -> Result<Self, ParamError> {
+        Ok(Self {
+            k_x: contact.k_x(),
+            k_z: contact.k_z(),
+            mu0: contact.mu0(),
+            mean_indentation: contact.mean_indentation(),
+            v0: finite("v0", v0)?,
+            frequency: positive("frequency", frequency)?,
+            excitation,
+        })
+    }
+
     /// α = A_z/ū_z (Eq. 16); 0 without normal oscillation.
     pub fn alpha(&self) -> f64 {
         self.excitation
@@ -130,7 +151,8 @@ impl SpringModel {
             .map_or(0.0, |o| o.amplitude() / self.mean_indentation)
     }
 
-    /// β = k_x v0/(μ0 k_z A_z f) (Eq. 17); `None` without a nonzero normal amplitude.
+    /// β = k_x v0/(μ0 k_z A_z f) (Eq. 17), signed like v0; `None` without a nonzero normal
+    /// amplitude.
     pub fn beta(&self) -> Option<f64> {
         let a_z = self.excitation.normal.as_ref()?.amplitude();
         (a_z > 0.0).then(|| self.k_x * self.v0 / (self.mu0 * self.k_z * a_z * self.frequency))
@@ -143,12 +165,13 @@ impl SpringModel {
 
     /// Runs to the periodic steady state and averages over whole periods.
     ///
-    /// Starts in forward slip (F_x = μ0 F_z): under normal oscillation the motion is then exact
-    /// once the normal force has passed its minimum, i.e. after one period.
+    /// Starts in slip along the drag (F_x = ±μ0 F_z, forward at v0 = 0): under normal
+    /// oscillation the motion is then exact once the normal force has passed its minimum, i.e.
+    /// after one period.
     pub fn simulate(&self, options: &SimulationOptions) -> SpringModelOutcome {
         let n = options.steps_per_period;
         let mut state = State {
-            fx: self.mu0 * self.normal_force(0.0),
+            fx: self.mu0 * self.normal_force(0.0) * if self.v0 < 0.0 { -1.0 } else { 1.0 },
             fy: 0.0,
         };
         let scale = self.mu0 * self.k_z * self.mean_indentation;
