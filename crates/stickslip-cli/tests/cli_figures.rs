@@ -16,7 +16,7 @@ use std::process::Command;
 const FIGURES: [(&str, u32, u32); 8] = [
     ("switch_function", 900, 600),
     ("sliding_curves", 900, 600),
-    ("example1", 1200, 800),
+    ("example1", 1200, 1200),
     ("example1_timings", 900, 600),
     ("popov_fig4", 900, 600),
     ("static_friction", 900, 600),

@@ -36,8 +36,11 @@ pub struct Summary {
     pub timings: Vec<example1::Timing>,
 }
 
+/// Draws one figure into a directory under a name.
+type Drawer<'a> = dyn Fn(&Path, &str) -> Result<[PathBuf; 2], FigureError> + 'a;
+
 const SINGLE: (u32, u32) = (900, 600);
-const DOUBLE: (u32, u32) = (1200, 800);
+const DOUBLE: (u32, u32) = (1200, 1200);
 
 /// The figure names (files `NAME.png`/`NAME.svg`) [`generate`] writes, in order.
 pub const NAMES: [&str; 8] = [
@@ -65,9 +68,7 @@ pub fn generate(out: &Path, size: Size, progress: &dyn Fn(&str)) -> Result<Summa
     std::fs::create_dir_all(out).map_err(|e| FigureError::io(out, e))?;
     let quick = size == Size::Quick;
     let mut files = Vec::new();
-    let mut save = |p: &dyn Fn(&Path, &str) -> Result<[PathBuf; 2], FigureError>,
-                    name: &str|
-     -> Result<(), FigureError> {
+    let mut save = |p: &Drawer, name: &str| -> Result<(), FigureError> {
         files.extend(p(out, name)?);
         Ok(())
     };
@@ -133,6 +134,36 @@ pub fn generate(out: &Path, size: Size, progress: &dyn Fn(&str)) -> Result<Summa
         legend_lower: !force,
         ..LineChart::default()
     };
+    // Phase I on a log scale: EP holds within g_ba like Phys, Regul creeps.
+    let g_ba = example1::MU_BA / example1::C;
+    let zoom = |traces: &[example1::Trace], title: &str| LineChart {
+        title: title.into(),
+        x_label: "t (s)".into(),
+        y_label: "|displacement| (m), floor 1e-9".into(),
+        series: traces
+            .iter()
+            .enumerate()
+            .map(|(i, tr)| {
+                let pts: Vec<(f64, f64)> =
+                    tr.t.iter()
+                        .zip(&tr.x)
+                        .filter(|(t, _)| **t <= example1::PHASE_ENDS[0])
+                        .map(|(&t, &x)| (t, x.abs().max(1e-9)))
+                        .collect();
+                Series::new(tr.label.clone(), &pts, Mark::Line, i)
+            })
+            .chain(std::iter::once(Series::new(
+                "g_ba = μ_ba / c",
+                &[(0.0, g_ba), (1.0, g_ba)],
+                Mark::Dashed,
+                7,
+            )))
+            .collect(),
+        log_y: true,
+        y_range: Some((1e-9, 0.1)),
+        legend_lower: true,
+        ..LineChart::default()
+    };
     let grid = Grid {
         title: Some(
             "Seed Example 1 (Fig. 1 C): phases I stick, II stick-slip/slide, III slip-stick".into(),
@@ -143,6 +174,8 @@ pub fn generate(out: &Path, size: Size, progress: &dyn Fn(&str)) -> Result<Summa
             panel(&ex.rapier, false, "rapier (dt 1/240 s): displacement"),
             panel(&ex.core, true, "core ODE: friction force"),
             panel(&ex.rapier, true, "rapier: friction force"),
+            zoom(&ex.core, "core ODE: phase I creep"),
+            zoom(&ex.rapier, "rapier: phase I creep"),
         ],
     };
     save(&|d, n| plot::save(&grid, d, n, DOUBLE), "example1")?;

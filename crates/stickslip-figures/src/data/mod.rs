@@ -14,7 +14,7 @@ pub fn thin<T: Clone>(v: &[T], max: usize) -> Vec<T> {
     }
     let k = v.len().div_ceil(max - 1);
     let mut out: Vec<T> = v.iter().step_by(k).cloned().collect();
-    if (v.len() - 1) % k != 0 {
+    if !(v.len() - 1).is_multiple_of(k) {
         out.push(v[v.len() - 1].clone());
     }
     out

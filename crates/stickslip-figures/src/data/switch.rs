@@ -43,7 +43,8 @@ pub fn switch_function(n: usize) -> Vec<Curve1> {
 pub fn sliding_curves(n: usize) -> Result<Vec<Curve1>, ParamError> {
     let n = n.max(2);
     let vs: Vec<f64> = (0..n).map(|i| 0.05 * i as f64 / (n - 1) as f64).collect();
-    let curves: Vec<(String, Box<dyn Fn(f64) -> f64>)> = vec![
+    type Named = (String, Box<dyn Fn(f64) -> f64>);
+    let curves: Vec<Named> = vec![
         ("constant 0.32 (Example 1)".into(), {
             let c = Curve::constant(0.32)?;
             Box::new(move |v| c.mu(v))
