@@ -71,7 +71,7 @@ pub fn write_popov(
             ),
             x_label: "β".into(),
             y_label: "α".into(),
-            value_label: "μ̄".into(),
+            value_label: "mean μ".into(),
             xs: xs.clone(),
             ys: ys.clone(),
             values,
