@@ -160,8 +160,12 @@ impl Plot for LineChart {
         for (s, p) in self.series.iter().zip(pts) {
             let c = color(s.color);
             // plotters joins wide polylines with miters, which shoot far out of the chart at
-            // sharp reversals of dense data: dense series are drawn 1 px wide.
-            let width = if p.len() > 400 { 1 } else { 2 };
+            // sharp reversals: series that reverse often (oscillations) are drawn 1 px wide.
+            let reversals = p
+                .windows(3)
+                .filter(|w| (w[1].1 - w[0].1) * (w[2].1 - w[1].1) < 0.0)
+                .count();
+            let width = if reversals > 10 { 1 } else { 2 };
             let anno = match s.mark {
                 Mark::Line => chart.draw_series(LineSeries::new(p, c.stroke_width(width))),
                 Mark::Dashed => {
