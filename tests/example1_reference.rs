@@ -2,8 +2,9 @@
 //! Invariants: in phase I (force at 0.95 F_ba) the elasto-plastic law sticks, its displacement
 //! never exceeding g_ba = μ_ba/c, while the regularized law creeps far beyond g_ba; in phases
 //! II–III EP follows the exact switched model (final displacement within 1 %), with both the
-//! explicit (Dormand–Prince) and the implicit (ESDIRK) integrator; and the switched model
-//! matches the closed-form sliding solution of a constant-force arc.
+//! explicit (Dormand–Prince) and the implicit (ESDIRK) integrator; the switched model
+//! matches the closed-form sliding solution of a constant-force arc; and every law's output is
+//! a trajectory: times never go back, the switched model never past its stop.
 
 use stickslip::core::block::{Block, ForceProfile, Integrator, Tolerances, simulate};
 use stickslip::core::law::{Coulomb, Law, Physical, Regularization, Regularized};
@@ -122,4 +123,39 @@ fn switched_model_matches_closed_form_arcs() {
         r.final_displacement()
     );
     assert!(r.stick_time > 1.0 && r.slip_time > 1.0);
+}
+
+#[test]
+fn output_times_increase_and_the_switched_model_stays_stopped() {
+    let laws = [
+        Law::Physical(Physical::new(MU_BA, curve()).unwrap()),
+        Law::Coulomb(Coulomb::new(MU_MAX).unwrap()),
+        Law::elasto_plastic(C, MU_BA, MU_MAX, curve()).unwrap(),
+        Law::Regularized(Regularized::new(curve(), 0.01, Regularization::Linear).unwrap()),
+    ];
+    for law in laws {
+        for integrator in [Integrator::Explicit, Integrator::Implicit] {
+            let r = run(law.clone(), integrator);
+            assert!(
+                r.t.windows(2).all(|w| w[1] >= w[0]),
+                "{} {integrator:?}: output times go back",
+                r.law
+            );
+            if matches!(law, Law::Physical(_) | Law::Coulomb(_)) {
+                // After the slip-stick of phase III the block rests where it stopped.
+                let x_end = r.final_displacement();
+                let late = r.max_displacement_between(2.5, 3.0);
+                let low =
+                    r.t.iter()
+                        .zip(&r.x)
+                        .filter(|(t, _)| **t >= 2.5)
+                        .fold(f64::INFINITY, |m, (_, x)| m.min(*x));
+                assert!(
+                    late - low < 1e-9 && (late - x_end).abs() < 1e-9,
+                    "{} {integrator:?}: moved after stopping ({low}..{late})",
+                    r.law
+                );
+            }
+        }
+    }
 }

@@ -10,60 +10,16 @@
 //! EP approaches the rigid reference as c grows: its deviation does not grow from c = 1e5 to
 //! 1e7, and at c = 1e7 (g_ba = 50 nm) it is within 3 %.
 
-use rapier3d::prelude::*;
 use stickslip::core::feeder::VibratoryFeeder;
-use stickslip::core::law::Law;
-use stickslip::core::sliding_curve::Curve;
-use stickslip::rapier::{FrictionMaterial, StickSlip};
+use stickslip::rapier::scenes::feeder_speed;
 
 const MU: f64 = 0.5;
 const G: f64 = 9.81;
 
-/// Mean transport speed of the part in rapier, with stickslip's EP law or plain friction.
+/// Mean transport speed of the part in rapier over 20 periods after 20, with stickslip's EP
+/// law (`Some(c)`) or plain friction.
 fn rapier_speed(feeder: &VibratoryFeeder, f: f64, dt: f64, ep: Option<f64>) -> f64 {
-    let mut world = PhysicsWorld::default();
-    world.integration_parameters.dt = dt as f32;
-    let trough = world.insert_body(RigidBodyBuilder::kinematic_position_based());
-    let trough_collider = world.insert_collider(
-        ColliderBuilder::cuboid(50.0, 0.05, 1.0).friction(MU as f32),
-        Some(trough),
-    );
-    let half = 0.02f32;
-    let (v0x, v0y) = feeder.trough_velocity(0.0);
-    let (part, _) = world.insert(
-        RigidBodyBuilder::dynamic()
-            .translation(Vector::new(0.0, 0.05 + half, 0.0))
-            .linvel(Vector::new(v0x as f32, v0y as f32, 0.0))
-            .lock_rotations()
-            .can_sleep(false),
-        ColliderBuilder::cuboid(half, half, half)
-            .density(1000.0)
-            .friction(MU as f32),
-    );
-    let mut friction = ep.map(|c| {
-        let law = Law::elasto_plastic(c, MU, MU, Curve::constant(MU).unwrap()).unwrap();
-        let mut m = StickSlip::new(FrictionMaterial::new(law));
-        m.attach(&mut world.colliders, trough_collider, None);
-        m
-    });
-    let period = 1.0 / f;
-    let (settle, measure) = (20.0 * period, 20.0 * period);
-    let steps = ((settle + measure) / dt).round() as usize;
-    let mut x_start = None;
-    for k in 0..steps {
-        let t_next = (k + 1) as f64 * dt;
-        let (x, y) = feeder.trough_position(t_next);
-        world.bodies[trough].set_next_kinematic_translation(Vector::new(x as f32, y as f32, 0.0));
-        match friction.as_mut() {
-            Some(m) => m.step(&mut world),
-            None => world.step(),
-        }
-        if x_start.is_none() && t_next >= settle {
-            x_start = Some((world.bodies[part].translation().x as f64, t_next));
-        }
-    }
-    let (x0, t0) = x_start.unwrap();
-    (world.bodies[part].translation().x as f64 - x0) / (steps as f64 * dt - t0)
+    feeder_speed(feeder, f, MU, dt, ep, 20, 20).unwrap()
 }
 
 #[test]

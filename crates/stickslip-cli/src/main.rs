@@ -7,7 +7,9 @@
 #[macro_use]
 mod output;
 mod block_cmd;
+mod figures_cmd;
 mod run_cmd;
+mod sweep_cmd;
 mod theory_cmd;
 
 use clap::{Parser, Subcommand};
@@ -32,6 +34,10 @@ enum Command {
     Block(block_cmd::BlockArgs),
     /// Run a scenario file headless; stream it to rerun (live viewer and/or .rrd file).
     Run(run_cmd::RunArgs),
+    /// Draw the README's figures (PNG and SVG) and write their checked data (figures.json).
+    Figures(figures_cmd::FiguresArgs),
+    /// Parameter sweeps over independent rapier worlds in parallel (CSV, JSON, heat maps).
+    Sweep(sweep_cmd::SweepArgs),
 }
 
 /// Errors a subcommand reports to the user.
@@ -58,6 +64,9 @@ pub enum CliError {
     /// Logging to rerun failed.
     #[error("rerun: {0}")]
     Rerun(#[from] stickslip_rerun::LogError),
+    /// A figure or a sweep could not be produced.
+    #[error("{0}")]
+    Figures(#[from] stickslip_figures::FigureError),
     /// A file operation failed.
     #[error("{0}")]
     Io(String),
@@ -69,6 +78,8 @@ fn main() -> ExitCode {
         Command::Theory(args) => theory_cmd::run(args, cli.json),
         Command::Block(args) => block_cmd::run(args, cli.json),
         Command::Run(args) => run_cmd::run(args, cli.json),
+        Command::Figures(args) => figures_cmd::run(args, cli.json),
+        Command::Sweep(args) => sweep_cmd::run(args, cli.json),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

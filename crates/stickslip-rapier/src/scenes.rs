@@ -258,6 +258,19 @@ impl PopovDrag {
     }
 }
 
+/// One sample of [`example1_trace`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Example1Sample {
+    /// Time since the force started (s).
+    pub t: f64,
+    /// Displacement of the box (m).
+    pub x: f64,
+    /// Velocity of the box (m/s).
+    pub v: f64,
+    /// Friction force on the box along x (N), from the contact's report (0 without contact).
+    pub friction: f64,
+}
+
 /// The seed's Example 1 in rapier: a 1 kg box (rotations locked) on the ground under the
 /// tangential force `profile`, with the friction `law`, at step `dt`. Returns the box's
 /// displacement at each of `times` (s) and its velocity at the end.
@@ -267,6 +280,27 @@ pub fn example1(
     dt: f64,
     times: &[f64],
 ) -> (Vec<f64>, f64) {
+    let end = times.iter().cloned().fold(0.0, f64::max);
+    let trace = example1_trace(law, profile, dt, end);
+    let mut out = Vec::with_capacity(times.len());
+    for s in &trace {
+        for &ti in times {
+            if (s.t - ti).abs() < 0.5 * dt {
+                out.push(s.x);
+            }
+        }
+    }
+    (out, trace.last().map_or(0.0, |s| s.v))
+}
+
+/// [`example1`] step by step: the box's displacement, velocity and friction force after every
+/// step up to `end` (s).
+pub fn example1_trace(
+    law: stickslip_core::law::Law,
+    profile: &stickslip_core::block::ForceProfile,
+    dt: f64,
+    end: f64,
+) -> Vec<Example1Sample> {
     let mut scene = BoxOnGround {
         half: 0.1,
         mass: 1.0,
@@ -282,19 +316,91 @@ pub fn example1(
         modifier.step(&mut scene.world);
     }
     let x0 = scene.x();
-    let mut out = Vec::with_capacity(times.len());
-    let end = times.iter().cloned().fold(0.0, f64::max);
     let steps = (end / dt).round() as usize;
+    let mut out = Vec::with_capacity(steps);
     for k in 0..steps {
         let t_mid = (k as f64 + 0.5) * dt;
         scene.set_force(Vector::new(profile.value(t_mid) as f32, 0.0, 0.0));
         modifier.step(&mut scene.world);
-        let t = (k + 1) as f64 * dt;
-        for &ti in times {
-            if (t - ti).abs() < 0.5 * dt {
-                out.push(scene.x() - x0);
+        // The report's friction force acts on collider 2 when it is the box.
+        let friction = modifier.reports().first().map_or(0.0, |r| {
+            let f = r.friction_force[0] as f64;
+            if r.collider1 == scene.box_collider {
+                -f
+            } else {
+                f
             }
+        });
+        out.push(Example1Sample {
+            t: (k + 1) as f64 * dt,
+            x: scene.x() - x0,
+            v: scene.vx(),
+            friction,
+        });
+    }
+    out
+}
+
+/// The vibratory feeder of `tests/rapier_feeder.rs` in rapier: a kinematic trough (friction
+/// μ) moving as `feeder`'s trough at frequency `frequency` carries a 4 cm cube (rotations
+/// locked). With `ep = Some(c)` the trough's contact uses the elasto-plastic law (μ_ba = μ_max
+/// = μ, flat curve, stiffness c), otherwise plain rapier Coulomb friction. Returns the part's
+/// mean speed along x (m/s) over `measure` periods after `settle` periods, at step `dt`.
+pub fn feeder_speed(
+    feeder: &stickslip_core::feeder::VibratoryFeeder,
+    frequency: f64,
+    mu: f64,
+    dt: f64,
+    ep: Option<f64>,
+    settle: usize,
+    measure: usize,
+) -> Result<f64, stickslip_core::ParamError> {
+    use stickslip_core::law::Law;
+    use stickslip_core::sliding_curve::Curve;
+    let mut world = PhysicsWorld::default();
+    world.integration_parameters.dt = dt as f32;
+    let trough = world.insert_body(RigidBodyBuilder::kinematic_position_based());
+    let trough_collider = world.insert_collider(
+        ColliderBuilder::cuboid(50.0, 0.05, 1.0).friction(mu as f32),
+        Some(trough),
+    );
+    let half = 0.02f32;
+    let (v0x, v0y) = feeder.trough_velocity(0.0);
+    let (part, _) = world.insert(
+        RigidBodyBuilder::dynamic()
+            .translation(Vector::new(0.0, 0.05 + half, 0.0))
+            .linvel(Vector::new(v0x as f32, v0y as f32, 0.0))
+            .lock_rotations()
+            .can_sleep(false),
+        ColliderBuilder::cuboid(half, half, half)
+            .density(1000.0)
+            .friction(mu as f32),
+    );
+    let mut friction = match ep {
+        Some(c) => {
+            let law = Law::elasto_plastic(c, mu, mu, Curve::constant(mu)?)?;
+            let mut m = crate::StickSlip::new(crate::FrictionMaterial::new(law));
+            m.attach(&mut world.colliders, trough_collider, None);
+            Some(m)
+        }
+        None => None,
+    };
+    let period = 1.0 / frequency;
+    let (settle, measure) = (settle as f64 * period, measure as f64 * period);
+    let steps = ((settle + measure) / dt).round() as usize;
+    let mut x_start = None;
+    for k in 0..steps {
+        let t_next = (k + 1) as f64 * dt;
+        let (x, y) = feeder.trough_position(t_next);
+        world.bodies[trough].set_next_kinematic_translation(Vector::new(x as f32, y as f32, 0.0));
+        match friction.as_mut() {
+            Some(m) => m.step(&mut world),
+            None => world.step(),
+        }
+        if x_start.is_none() && t_next >= settle {
+            x_start = Some((world.bodies[part].translation().x as f64, t_next));
         }
     }
-    (out, scene.vx())
+    let (x0, t0) = x_start.unwrap_or((0.0, 0.0));
+    Ok((world.bodies[part].translation().x as f64 - x0) / (steps as f64 * dt - t0))
 }

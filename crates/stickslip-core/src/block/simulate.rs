@@ -534,7 +534,13 @@ fn switched(
             IVP::ode(&arc, start, end, y0).even(OUTPUT_DT).event(&arc)
         )?;
         add_stats(&mut run, &sol.steps, &sol.evals);
+        // The even-grid output of the step that crossed the event can run past it; the arc
+        // ends at the event (the last point).
+        let t_stop = *sol.t.last().unwrap_or(&end);
         for (ti, y) in sol.t.iter().zip(&sol.y) {
+            if *ti > t_stop {
+                continue;
+            }
             run.t.push(*ti);
             run.x.push(y[0]);
             run.v.push(y[1]);
