@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Runs stickslip's benchmarks and writes BENCHMARKS.md:
+#   0. (docs/bench-profile.md, the perf profile the report includes, is written by hand)
 #   1. criterion benches `benches/benches/step_cost.rs` (package stickslip-benches) (step time of the same scenes with plain rapier,
 #      a no-op hook and stickslip's laws; with STICKSLIP_BENCH_FULL=1 also the ~100k-contact
 #      plane) plus their extra pass (contacts, allocations per step, live heap, interleaved
@@ -47,6 +48,11 @@ bench_env=(STICKSLIP_BENCH_OUT="$work/cost.json")
 if [[ $full == 1 ]]; then bench_env+=(STICKSLIP_BENCH_FULL=1); fi
 # shellcheck disable=SC2086
 env "${bench_env[@]}" cargo bench ${CARGO_FLAGS:-} -p stickslip-benches --bench step_cost | tee "$work/bench.log"
+# Thread scaling: the same bench built with rapier's `parallel` feature, only its
+# thread-scaling pass (pools of 1 and of all threads).
+# shellcheck disable=SC2086
+STICKSLIP_BENCH_THREADS_OUT="$work/threads.json" \
+    cargo bench ${CARGO_FLAGS:-} -p stickslip-benches --features parallel --bench step_cost | tee "$work/threads.log"
 t2=$(secs)
 
 build_s=$((t1 - t0))
@@ -54,6 +60,8 @@ bench_s=$((t2 - t1))
 "$CARGO_TARGET_DIR/release/bench_report" \
     --cost-json "$work/cost.json" \
     --criterion "$CRITERION_HOME" \
+    --threads-json "$work/threads.json" \
+    --profile docs/bench-profile.md \
     --note "Build (bench + report binaries, incremental): $build_s s; criterion benches and their extra pass: $bench_s s$([[ $full == 1 ]] && echo ', ~100k-contact plane included' || echo ', ~100k-contact plane skipped (--quick)')." \
     --out "$out"
 t3=$(secs)

@@ -317,9 +317,91 @@ fn extras(scene: Scene, variants: &[Variant], mode: Mode) -> Value {
     })
 }
 
+/// Thread scaling (built with rapier's `parallel` feature): wall time per step of plain
+/// rapier, the no-op hook and EP with rapier's work on a rayon pool of 1 and of all threads.
+/// Variants and pool sizes interleaved in rounds, median per cell.
+#[cfg(feature = "parallel")]
+fn thread_scaling(scene: Scene, mode: Mode) -> Value {
+    let variants = [Variant::PlainSimplified, Variant::NoopHook, Variant::Ep];
+    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
+    let pools: Vec<(usize, rayon::ThreadPool)> = [1, threads]
+        .into_iter()
+        .map(|n| {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(n)
+                .build()
+                .expect("thread pool");
+            (n, pool)
+        })
+        .collect();
+    let settle = settle_steps(scene, mode);
+    let mut benches: Vec<Bench> = variants
+        .iter()
+        .map(|&v| Bench::settled(scene, v, settle))
+        .collect();
+    let rounds = if mode == Mode::Smoke { 1 } else { 9 };
+    let steps = if mode == Mode::Smoke { 1 } else { 20 };
+    let mut wall = vec![vec![Vec::new(); pools.len()]; benches.len()];
+    for r in 0..rounds {
+        for (k, (_, pool)) in pools.iter().enumerate() {
+            for i in 0..benches.len() {
+                let i = (i + r) % benches.len();
+                let b = &mut benches[i];
+                pool.install(|| {
+                    b.step();
+                    let t = Instant::now();
+                    for _ in 0..steps {
+                        b.step();
+                    }
+                    wall[i][k].push(t.elapsed().as_secs_f64() * 1e9 / steps as f64);
+                });
+            }
+        }
+    }
+    let rows: Vec<Value> = variants
+        .iter()
+        .zip(wall.iter_mut())
+        .map(|(v, w)| {
+            let per: Vec<f64> = w.iter_mut().map(|c| median(c)).collect();
+            json!({
+                "variant": v.name(),
+                "threads": pools.iter().map(|p| p.0).collect::<Vec<_>>(),
+                "wall_ns_per_step": per,
+                "speedup": per[0] / per[per.len() - 1],
+            })
+        })
+        .collect();
+    json!({"name": scene.name(), "variants": rows})
+}
+
 fn main() {
     let mode = mode();
     let filter = filter();
+    #[cfg(feature = "parallel")]
+    if let Some(path) = std::env::var_os("STICKSLIP_BENCH_THREADS_OUT") {
+        // Only the thread-scaling pass (the report script runs it as a second binary).
+        let mut out = Vec::new();
+        for scene in [
+            Scene::plane_for_points(10_000),
+            Scene::Pile {
+                stacks: 625,
+                height: 4,
+            },
+        ] {
+            if !selected(scene, &filter) {
+                continue;
+            }
+            let v = thread_scaling(scene, mode);
+            println!("thread scaling {}: {v}", scene.name());
+            out.push(v);
+        }
+        std::fs::write(
+            &path,
+            serde_json::to_string_pretty(&json!({"scenes": out})).expect("json"),
+        )
+        .expect("write STICKSLIP_BENCH_THREADS_OUT");
+        return;
+    }
     run_criterion(mode, &filter);
 
     let mut out = Vec::new();

@@ -35,6 +35,8 @@ struct Options {
     criterion: Option<PathBuf>,
     skip: Vec<String>,
     notes: Vec<String>,
+    threads_json: Option<PathBuf>,
+    profile: Option<PathBuf>,
 }
 
 fn parse() -> Result<Options, String> {
@@ -51,10 +53,13 @@ fn parse() -> Result<Options, String> {
                 .skip
                 .extend(value("--skip")?.split(',').map(|s| s.trim().to_string())),
             "--note" => o.notes.push(value("--note")?),
+            "--threads-json" => o.threads_json = Some(value("--threads-json")?.into()),
+            "--profile" => o.profile = Some(value("--profile")?.into()),
             "--help" | "-h" => {
                 return Err(
                     "usage: bench_report [--smoke] [--out FILE] [--cost-json FILE] \
-                     [--criterion DIR] [--skip cost,accuracy,seed] [--note TEXT]..."
+                     [--criterion DIR] [--threads-json FILE] [--profile FILE] \
+                     [--skip cost,accuracy,seed] [--note TEXT]..."
                         .into(),
                 );
             }
@@ -207,6 +212,18 @@ fn run(opts: &Options) -> String {
             Err(e) => {
                 eprintln!("cost section failed: {e}");
                 let _ = writeln!(body, "## Cost\n\nNot available: {e}\n");
+            }
+        }
+    }
+    if !skip("cost") {
+        cost::threads_section(&mut body, &mut summary, opts);
+        if let Some(path) = &opts.profile {
+            match std::fs::read_to_string(path) {
+                Ok(text) => {
+                    body.push_str(&text);
+                    body.push('\n');
+                }
+                Err(e) => eprintln!("profile notes {}: {e}", path.display()),
             }
         }
     }
