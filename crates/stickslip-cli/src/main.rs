@@ -9,6 +9,7 @@ mod output;
 mod block_cmd;
 mod figures_cmd;
 mod run_cmd;
+mod showcase;
 mod sweep_cmd;
 mod theory_cmd;
 

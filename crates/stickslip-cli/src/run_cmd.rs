@@ -23,8 +23,10 @@ const TABLE_BODIES: usize = 12;
 /// Arguments of `stickslip run`.
 #[derive(Debug, Args)]
 pub struct RunArgs {
-    /// Scenario file (TOML). Without one, the built-in scenario (the seed's Example 1 block)
-    /// runs.
+    /// Scenario file (TOML). Without one, the built-in showcase runs (three inclined troughs:
+    /// EP holding, EP conveying under ultrasonic vibration at Popov's speed, plain rapier
+    /// friction) and the comparison is printed; run from a terminal without `--rrd`, it is
+    /// recorded to `stickslip-showcase.rrd` for rerun.
     #[arg(value_name = "SCENARIO.toml")]
     scenario: Option<PathBuf>,
     /// Write a rerun recording to this `.rrd` file (open it with `rerun FILE`).
@@ -65,6 +67,9 @@ struct RunReport<'a> {
     rrd: Option<String>,
     /// Wall-clock time of the run (s).
     wall_seconds: f64,
+    /// The built-in showcase's comparison (absent for other scenarios).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    showcase: Option<Vec<crate::showcase::Row>>,
 }
 
 /// Where the recording is written before it is renamed.
@@ -143,8 +148,21 @@ pub fn run(args: &RunArgs, json: bool) -> Result<(), CliError> {
         .steps
         .unwrap_or(scenario_steps.saturating_sub(runner.steps_done()));
 
+    let showcase = crate::showcase::applies(&scenario);
+    // An interactive bare run records itself, so that it can be looked at in rerun.
+    let default_rrd = (showcase
+        && args.rrd.is_none()
+        && connect.is_none()
+        && args.resume.is_none()
+        && !json
+        && std::io::stdout().is_terminal())
+    .then(|| PathBuf::from("stickslip-showcase.rrd"));
     let mut sinks = Vec::new();
-    let pending = args.rrd.as_deref().map(PendingRrd::new);
+    let pending = args
+        .rrd
+        .as_deref()
+        .or(default_rrd.as_deref())
+        .map(PendingRrd::new);
     if let Some(p) = &pending {
         sinks.push(Sink::File(p.tmp.clone()));
     }
@@ -185,11 +203,15 @@ pub fn run(args: &RunArgs, json: bool) -> Result<(), CliError> {
         logged_steps: logged,
         rrd,
         wall_seconds: wall,
+        showcase: showcase.then(|| crate::showcase::compare(&summary)),
     };
     if json {
         output::json(&report)
     } else {
         print_table(&report);
+        if let Some(rows) = &report.showcase {
+            crate::showcase::print(rows, report.rrd.as_deref());
+        }
         Ok(())
     }
 }

@@ -87,19 +87,39 @@ fn run_writes_an_rrd_that_matches_the_summary() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// The main job: a bare `stickslip run` runs the built-in showcase and compares its three
+/// troughs — EP holds (no creep), EP under ultrasonic normal vibration conveys at Popov's
+/// speed (Eq. 33 solved for μ̄ = tan θ, within 5 % as the bevy conveyor test), plain rapier
+/// friction holds — and names the comparison and how to open a recording.
 #[test]
-fn bare_run_uses_the_builtin_scenario_and_prints_a_table() {
+fn bare_run_is_the_showcase_and_compares_it_with_the_theory() {
+    let out = run(bin().args(["run", "--json"]));
+    assert!(out.status.success());
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(json["scenario"], "showcase");
+    assert_eq!(json["logged_steps"], 0);
+    assert!(
+        json["rrd"].is_null(),
+        "nothing recorded unless run from a terminal"
+    );
+    let rows = json["showcase"].as_array().unwrap();
+    let row = |t: &str| rows.iter().find(|r| r["trough"] == t).unwrap().clone();
+    let speed = |t: &str| row(t)["speed"].as_f64().unwrap();
+    // Holding: g_ba = μ_ba / c = 5 µm is all a box may move; at rest its speed is ~0.
+    assert!(speed("ep_still").abs() < 1e-4, "{}", speed("ep_still"));
+    assert!(speed("plain").abs() < 1e-3, "{}", speed("plain"));
+    let theory = row("ep_vibrated")["theory"].as_f64().unwrap();
+    assert!(theory > 0.01, "{theory}");
+    let v = speed("ep_vibrated");
+    assert!((v - theory).abs() < 0.05 * theory, "{v} vs {theory}");
+    // The table names the comparison and the way to record and open the run.
     let out = run(bin().args(["run", "--steps", "50"]));
     assert!(out.status.success());
     let text = String::from_utf8_lossy(&out.stdout);
-    assert!(text.contains("example1-block"));
-    assert!(text.contains("dissipated energy"));
-    assert!(text.contains("block"));
-    let out = run(bin().args(["run", "--steps", "50", "--json"]));
-    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    assert_eq!(json["scenario"], "example1-block");
-    assert_eq!(json["logged_steps"], 0);
-    assert!(json["rrd"].is_null());
+    assert!(text.contains("showcase"));
+    assert!(text.contains("what the three troughs did"), "{text}");
+    assert!(text.contains("Popov Eq. 33"), "{text}");
+    assert!(text.contains("rerun showcase.rrd"), "{text}");
 }
 
 #[test]

@@ -55,8 +55,10 @@ pub struct RrdContents {
     pub timelines: BTreeSet<String>,
     /// Entities by path (e.g. `world/bodies/block`).
     pub entities: BTreeMap<String, EntityContents>,
-    /// Number of chunks decoded.
+    /// Number of chunks decoded (of the recording; the viewer layout is apart).
     pub chunks: usize,
+    /// Chunks of a blueprint (the viewer layout) sent with the recording.
+    pub blueprint_chunks: usize,
 }
 
 impl RrdContents {
@@ -118,6 +120,9 @@ pub fn contents(messages: &[LogMsg]) -> Result<RrdContents, InspectError> {
             LogMsg::SetStoreInfo(info) => {
                 out.application_ids
                     .insert(info.info.application_id().to_string());
+            }
+            LogMsg::ArrowMsg(store, _) if store.kind() == rerun::StoreKind::Blueprint => {
+                out.blueprint_chunks += 1;
             }
             LogMsg::ArrowMsg(_, arrow) => {
                 let chunk = Chunk::from_arrow_msg(arrow)

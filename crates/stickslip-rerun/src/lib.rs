@@ -39,6 +39,7 @@
 #![warn(missing_docs)]
 
 pub mod inspect;
+pub mod layout;
 pub mod paths;
 
 use rapier3d::prelude::*;
@@ -168,6 +169,10 @@ pub struct LogOptions {
     pub force_scale: Option<f32>,
     /// Radius of contact points (m).
     pub contact_radius: f32,
+    /// Send stickslip's viewer layout ([`layout::blueprint`]) with the first logged step, so
+    /// that the recording opens with the 3D scene, contacts by regime and the friction time
+    /// series side by side.
+    pub blueprint: bool,
 }
 
 impl Default for LogOptions {
@@ -178,6 +183,7 @@ impl Default for LogOptions {
             max_body_series: 32,
             force_scale: None,
             contact_radius: 0.01,
+            blueprint: true,
         }
     }
 }
@@ -338,6 +344,9 @@ impl RerunLogger {
         rec.set_time_sequence(paths::STEP, step as i64);
         rec.set_duration_secs(paths::SIM_TIME, stickslip.time());
         if !self.static_done {
+            if self.opts.blueprint {
+                layout::blueprint().send(rec, rerun::blueprint::BlueprintActivation::default())?;
+            }
             self.log_statics()?;
             self.static_done = true;
         }

@@ -42,8 +42,9 @@ pub use spec::Scenario;
 
 use std::path::Path;
 
-/// The built-in scenario's TOML (the seed's Example 1 block, `scenarios/example1_block.toml`).
-pub const BUILTIN_TOML: &str = include_str!("../../../scenarios/example1_block.toml");
+/// The built-in scenario's TOML (`scenarios/showcase.toml`: three inclined troughs — EP holding,
+/// EP conveying under ultrasonic vibration, plain rapier friction).
+pub const BUILTIN_TOML: &str = include_str!("../../../scenarios/showcase.toml");
 
 impl Scenario {
     /// Parses and validates a scenario. `origin` names the source in errors.

@@ -83,6 +83,9 @@ fn every_shipped_scenario_has_a_check() {
         "popov_plate_sweep",
         "vibrating_conveyor",
         "row_250",
+        // The built-in one: its physics (EP holds, vibration conveys at Popov's speed, plain
+        // holds) is checked by the CLI's main-job test, crates/stickslip-cli/tests/cli_run.rs.
+        "showcase",
     ];
     let mut found = Vec::new();
     for entry in std::fs::read_dir(scenarios_dir()).unwrap() {
@@ -107,9 +110,9 @@ fn every_shipped_scenario_has_a_check() {
 }
 
 #[test]
-fn builtin_is_the_example1_file() {
+fn builtin_is_the_showcase_file() {
     let builtin = Scenario::builtin();
-    assert_eq!(builtin.name, load("example1_block").name);
+    assert_eq!(builtin.name, load("showcase").name);
 }
 
 #[test]
