@@ -366,9 +366,13 @@ impl<H: PhysicsHooks> StickSlip<H> {
         let d_el = elastic_displacement(law, rec.force, f_n);
         let (pose1, pose2) = (col1.position(), col2.position());
         if holding && rec.anchored && self.config.anchor_gain > 0.0 {
-            // A moving surface (conveyor hooks) carries collider 1's anchor along.
-            let a1 = pose1.transform_point(rec.anchor1) + surface * dt as f32;
-            rec.anchor1 = pose1.inverse_transform_point(a1);
+            // A moving surface (conveyor hooks) carries collider 1's anchor along (an inverse
+            // transform per holding contact and step only where a surface moves).
+            let mut a1 = pose1.transform_point(rec.anchor1);
+            if surface != Vector::ZERO {
+                a1 += surface * dt as f32;
+                rec.anchor1 = pose1.inverse_transform_point(a1);
+            }
             let drift = basis.tangential(pose2.transform_point(rec.anchor2) - a1) - d_el;
             let v_corr = drift * (-(self.config.anchor_gain / dt) as f32);
             for c in m.solver_contacts.iter_mut() {
