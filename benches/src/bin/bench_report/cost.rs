@@ -106,6 +106,7 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
     let mut moving_alloc: Vec<String> = Vec::new();
     let mut plain_allocs: f64 = 0.0;
     let mut worst_bytes: f64 = 0.0;
+    let mut worst_own: f64 = 0.0;
     let mut worst_state: f64 = 0.0;
     let mut scaling: Vec<Scaling> = Vec::new();
 
@@ -226,7 +227,13 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
             let points = ep.f("points");
             let records = ep.f("stickslip_active_contacts");
             let per_manifold = extra / manifolds;
-            worst_bytes = worst_bytes.max(per_manifold);
+            // The store's own count (capacity included): in moving scenes the two worlds'
+            // contact sets drift apart, so the heap difference there also holds rapier's.
+            let own = ep.f("stickslip_state_heap_bytes") / manifolds;
+            worst_own = worst_own.max(own);
+            if name.starts_with("plane_") || name.starts_with("pile_") {
+                worst_bytes = worst_bytes.max(per_manifold);
+            }
             worst_state = worst_state.max(state_bytes * records / manifolds);
             mem_rows.push(vec![
                 format!("`{name}`"),
@@ -239,6 +246,7 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
                 num(extra / records, 3),
                 num(per_manifold, 3),
                 num(extra / points, 3),
+                num(own, 3),
                 num(ep.f("live_heap_growth_per_step"), 3),
             ]);
         }
@@ -394,6 +402,7 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
             "heap B per record",
             "heap B per active manifold",
             "heap B per point",
+            "store's own count, B per active manifold",
             "heap growth B/step",
         ],
         &mem_rows,
@@ -413,10 +422,17 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
         worst_state <= BYTES_TARGET,
     );
     summary.add(
-        "all stickslip heap per active contact (slots, spare capacity, key map, free list, flags)",
+        "all stickslip heap per active contact (slots, spare capacity, key map, free list, \
+         flags): live heap EP − no-op, static scenes",
         "≤ 64 B",
         format!("{} B per active manifold, worst scene", num(worst_bytes, 3)),
         worst_bytes <= BYTES_TARGET,
+    );
+    summary.add(
+        "stickslip's contact store by its own count (capacity included), every scene",
+        "≤ 64 B",
+        format!("{} B per active manifold, worst scene", num(worst_own, 3)),
+        worst_own <= BYTES_TARGET,
     );
 
     // Allocations.
