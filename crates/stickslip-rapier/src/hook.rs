@@ -320,7 +320,13 @@ impl<H: PhysicsHooks> StickSlip<H> {
             // contact slipped, and the law integrates the slip from its own state.
             let mu_meas = vec2::norm(basis.project(meas.mu));
             let saturated = rec.limit > 0.0 && mu_meas >= (1.0 - SATURATION) * rec.limit as f64;
-            holding = !saturated && !regul;
+            // A compliant contact under in-plane vibration cannot hold once the spring force
+            // it carries, s + a(t), leaves the friction circle (Eq. 9): it slips now.
+            let overloaded = compliant.is_some_and(|(s, _)| {
+                let a = in_plane_force(s, f_mean, &basis, rel, t_mid);
+                vec2::norm(vec2::add(measured, a)) > law.static_coefficient() * f_eff
+            });
+            holding = !saturated && !regul && !overloaded;
             let mut state = if holding {
                 FrictionState::with_force(measured)
             } else {
