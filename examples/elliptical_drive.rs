@@ -27,9 +27,12 @@ fn main() {
                 t0.elapsed()
             );
         }
-        for warm in [20, 50, 100, 200] {
+        for (mass, warm) in [(100.0, 50), (100.0, 100), (30.0, 30), (30.0, 60), (10.0, 30)] {
+            let mut p = p.clone();
+            p.sled_mass = mass;
             let t0 = std::time::Instant::now();
             let m = p.run_free(0.0, warm, 10).unwrap();
+            print!("mass {mass} ");
             println!("  free warm {warm}: v {:.4e} mu {:.4} ({:?})", m.velocity, m.mu_eff, t0.elapsed());
         }
     }

@@ -342,9 +342,9 @@ pub struct PlateMeasurement {
 
 impl VibratingPlate {
     /// Elliptical vibration: normal ratio `alpha` (phase 0) and tangential ratio
-    /// `tangential` along +x shifted by `phase_shift` periods, both sines; μ0 = 0.5,
-    /// c = 1e4 1/m, F̄ = 9.81 N, f = 50 Hz, 400 steps per period (40 averaged), a 1000 kg sled
-    /// (resonance 1.6 Hz).
+    /// `tangential` along +x shifted by `phase_shift` periods, both sines (either may be 0);
+    /// μ0 = 0.5, c = 1e4 1/m, F̄ = 9.81 N, f = 50 Hz, 400 steps per period (40 averaged), a
+    /// 100 kg sled (resonance √(c F̄/m)/2π = 5 Hz, a tenth of f).
     pub fn elliptical(
         alpha: f64,
         tangential: f64,
@@ -353,7 +353,7 @@ impl VibratingPlate {
     ) -> Result<Self, stickslip_core::ParamError> {
         use stickslip_core::waveform::Waveform;
         let mut components = Vec::new();
-        if alpha > 0.0 {
+        if alpha > 0.0 || tangential <= 0.0 {
             components.push(crate::VibrationComponent::new(
                 crate::VibrationDirection::Normal,
                 crate::Amplitude::Ratio(alpha),
@@ -361,14 +361,16 @@ impl VibratingPlate {
                 0.0,
             )?);
         }
-        components.push(crate::VibrationComponent::new(
-            crate::VibrationDirection::Tangential {
-                axis: [1.0, 0.0, 0.0],
-            },
-            crate::Amplitude::Ratio(tangential),
-            Waveform::Sine,
-            phase_shift,
-        )?);
+        if tangential > 0.0 {
+            components.push(crate::VibrationComponent::new(
+                crate::VibrationDirection::Tangential {
+                    axis: [1.0, 0.0, 0.0],
+                },
+                crate::Amplitude::Ratio(tangential),
+                Waveform::Sine,
+                phase_shift,
+            )?);
+        }
         Ok(VibratingPlate {
             mu0: 0.5,
             c: 1e4,
@@ -380,7 +382,7 @@ impl VibratingPlate {
                 crate::VibrationMode::Averaged => 40,
                 crate::VibrationMode::TimeResolved => 400,
             },
-            sled_mass: 1000.0,
+            sled_mass: 100.0,
         })
     }
 
@@ -492,9 +494,6 @@ impl VibratingPlate {
         let normal = source.normal().cloned();
         modifier.set_vibration(scene.ground, source);
         let press = Vector::new(0.0, -(self.normal_force as f32), 0.0);
-        // Settle onto the plate, then start.
-        scene.set_force(press);
-        let _ = &mut scene.world.bodies[scene.body];
         let v0 = imposed.unwrap_or(v_start);
         scene.world.bodies[scene.body].set_linvel(Vector::new(v0 as f32, 0.0, 0.0), true);
         let (mut sum_fx, mut sum_fz) = (0.0, 0.0);

@@ -438,7 +438,7 @@ const LOAD_BAND: f64 = 0.01;
 /// Most tables one source keeps (distinct μ0 and load bands).
 const MAX_DRIVE_TABLES: usize = 64;
 /// Points per decade of the dimensionless speed.
-const DRIVE_POINTS_PER_DECADE: usize = 10;
+const DRIVE_POINTS_PER_DECADE: usize = 16;
 /// Decades below the amplitude scale where the table starts.
 const DRIVE_DECADES_BELOW: f64 = 3.0;
 /// Decades above the amplitude scale where it ends (μ̄ is on its plateau long before).
@@ -532,9 +532,24 @@ impl DriveTable {
         if x >= last as f64 {
             return values[last];
         }
+        // Catmull-Rom on the uniform log grid (one-sided at the ends), kept inside the two
+        // neighbours' range so a kink (the onset of pure sliding) is not overshot.
         let i = (x.floor() as usize).min(last - 1);
         let w = (x - i as f64).clamp(0.0, 1.0);
-        values[i] + w * (values[i + 1] - values[i])
+        let (p1, p2) = (values[i], values[i + 1]);
+        let p0 = if i > 0 { values[i - 1] } else { 2.0 * p1 - p2 };
+        let p3 = if i + 2 <= last {
+            values[i + 2]
+        } else {
+            2.0 * p2 - p1
+        };
+        let (m1, m2) = (0.5 * (p2 - p0), 0.5 * (p3 - p1));
+        let (w2, w3) = (w * w, w * w * w);
+        let v = (2.0 * w3 - 3.0 * w2 + 1.0) * p1
+            + (w3 - 2.0 * w2 + w) * m1
+            + (-2.0 * w3 + 3.0 * w2) * p2
+            + (w3 - w2) * m2;
+        v.clamp(p1.min(p2), p1.max(p2))
     }
 }
 
