@@ -46,11 +46,17 @@ fn in_plane_mean_friction_matches_the_theory_over_amplitudes_and_speeds() {
                      ({:+.2} %)",
                     100.0 * err
                 );
-                assert!(err.abs() < 0.03, "{mode:?} {ratio} u {u}: {got} vs {theory}");
+                assert!(
+                    err.abs() < 0.03,
+                    "{mode:?} {ratio} u {u}: {got} vs {theory}"
+                );
             }
         }
     }
-    println!("in-plane μ̄(v0): worst relative error {:.2} %", 100.0 * worst);
+    println!(
+        "in-plane μ̄(v0): worst relative error {:.2} %",
+        100.0 * worst
+    );
 }
 
 /// The speed where the dragged sled's mean friction vanishes: secant through drags at 0.9 and
@@ -99,5 +105,8 @@ fn elliptical_vibration_drives_the_sled_at_the_theory_s_free_drive_velocity() {
         // The direction reverses with the phase shift's sign.
         assert!(free_speeds[0] * free_speeds[1] < 0.0, "{free_speeds:?}");
     }
-    println!("elliptical drive: worst relative error {:.2} %", 100.0 * worst);
+    println!(
+        "elliptical drive: worst relative error {:.2} %",
+        100.0 * worst
+    );
 }

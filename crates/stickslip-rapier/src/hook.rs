@@ -502,8 +502,7 @@ fn in_plane_force(
         let Some(axis) = c.direction().axis() else {
             continue;
         };
-        let Some(e) = vec2::normalize(basis.project(Vector::new(axis[0], axis[1], axis[2])))
-        else {
+        let Some(e) = vec2::normalize(basis.project(Vector::new(axis[0], axis[1], axis[2]))) else {
             continue;
         };
         let w = rel * c.amplitude().force(f_mean) * s.component_signal(c, t);
@@ -628,10 +627,8 @@ fn averaged_in_plane(
         _ => None,
     });
     let x = match tangential {
-        Some(axis) => {
-            vec2::normalize(basis.project(Vector::new(axis[0], axis[1], axis[2])))
-                .map(|e| vec2::scale(e, rel))
-        }
+        Some(axis) => vec2::normalize(basis.project(Vector::new(axis[0], axis[1], axis[2])))
+            .map(|e| vec2::scale(e, rel)),
         None => vec2::normalize(slip).or_else(|| vec2::normalize(mu_state)),
     };
     let Some(x) = x else {

@@ -400,11 +400,16 @@ impl VibratingPlate {
     }
 
     /// The theory's excitation (displacements, see the type's docs).
-    pub fn excitation(&self) -> Result<stickslip_core::popov::Excitation, stickslip_core::ParamError> {
+    pub fn excitation(
+        &self,
+    ) -> Result<stickslip_core::popov::Excitation, stickslip_core::ParamError> {
         let mut ex = self.source()?.excitation(self.mu0, self.normal_force)?;
         // In-plane amplitudes come in slip lengths of 1; the contact's is μ0/c.
         let len = self.mu0 / self.c;
-        for o in [&mut ex.tangential, &mut ex.transverse].into_iter().flatten() {
+        for o in [&mut ex.tangential, &mut ex.transverse]
+            .into_iter()
+            .flatten()
+        {
             *o = stickslip_core::popov::Oscillation::new(
                 o.amplitude() * len,
                 o.waveform().clone(),
@@ -438,8 +443,7 @@ impl VibratingPlate {
     /// The theory's blocking force along x (N): the force that holds the sled at rest
     /// (negative when the vibration drives it towards +x).
     pub fn theory_blocking_force(&self) -> Result<f64, stickslip_core::ParamError> {
-        let b =
-            stickslip_core::popov::blocking_force(&self.contact()?, &self.excitation()?)?;
+        let b = stickslip_core::popov::blocking_force(&self.contact()?, &self.excitation()?)?;
         Ok(-b)
     }
 
@@ -514,7 +518,11 @@ impl VibratingPlate {
                 && let Some(r) = modifier.reports().first()
             {
                 // The report's friction acts on body 2.
-                let on_sled = if r.collider2 == scene.ground { -1.0 } else { 1.0 };
+                let on_sled = if r.collider2 == scene.ground {
+                    -1.0
+                } else {
+                    1.0
+                };
                 sum_fx += -on_sled * r.friction_force[0] as f64;
                 let factor = match (&normal, self.mode) {
                     // The law saw F̄ (1 + α w)⁺; the solver's normal force is F̄.
