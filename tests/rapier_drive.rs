@@ -110,3 +110,72 @@ fn elliptical_vibration_drives_the_sled_at_the_theory_s_free_drive_velocity() {
         100.0 * worst
     );
 }
+
+#[test]
+fn superimposed_sources_are_validated_and_survive_a_snapshot() {
+    use stickslip::core::law::Law;
+    use stickslip::core::waveform::Waveform;
+    use stickslip::rapier::scenes::BoxOnGround;
+    use stickslip::rapier::{
+        Amplitude, FrictionMaterial, StickSlip, VibrationComponent, VibrationDirection,
+        VibrationSource,
+    };
+    let comp = |d, a, phase| {
+        VibrationComponent::new(d, Amplitude::Ratio(a), Waveform::Sine, phase).unwrap()
+    };
+    let x = VibrationDirection::Tangential {
+        axis: [1.0, 0.0, 0.0],
+    };
+    let n = VibrationDirection::Normal;
+    let ok = |c: &[VibrationComponent]| {
+        VibrationSource::superimposed(c, 50.0, VibrationMode::TimeResolved).is_ok()
+    };
+    assert!(ok(&[comp(n, 0.6, 0.0), comp(x, 0.75, 0.25)]));
+    assert!(!ok(&[]), "no component");
+    assert!(!ok(&[comp(n, 0.6, 0.0), comp(n, 0.1, 0.5)]), "two normals");
+    assert!(
+        !ok(&[comp(x, 0.6, 0.0), comp(x, 0.1, 0.5)]),
+        "two tangentials"
+    );
+    let skew = VibrationDirection::Transverse {
+        axis: [1.0, 0.0, 1.0],
+    };
+    assert!(
+        !ok(&[comp(x, 0.6, 0.0), comp(skew, 0.1, 0.5)]),
+        "axes not perpendicular"
+    );
+    assert!(VibrationComponent::new(n, Amplitude::Ratio(f64::NAN), Waveform::Sine, 0.0).is_err());
+    assert!(
+        VibrationComponent::new(n, Amplitude::Ratio(0.5), Waveform::Sine, f64::INFINITY).is_err()
+    );
+    let across = VibrationDirection::Transverse {
+        axis: [0.0, 0.0, 2.0],
+    };
+    let src = VibrationSource::superimposed(
+        &[
+            comp(n, 0.6, 0.0),
+            comp(x, 0.75, 0.25),
+            comp(across, 0.1, 0.7),
+        ],
+        50.0,
+        VibrationMode::Averaged,
+    )
+    .unwrap();
+
+    let scene = BoxOnGround::default().build();
+    let curve = stickslip::core::sliding_curve::Curve::constant(0.5).unwrap();
+    let law = Law::elasto_plastic(1e4, 0.5, 0.5, curve).unwrap();
+    let mut m = StickSlip::new(FrictionMaterial::new(law));
+    m.set_vibration(scene.ground, src.clone());
+    let json = serde_json::to_string(&m.snapshot()).unwrap();
+    let back: stickslip::rapier::StickSlipSnapshot = serde_json::from_str(&json).unwrap();
+    let restored = StickSlip::restore(&back, &scene.world.colliders, ()).unwrap();
+    let got = restored.vibration(scene.ground).expect("restored source");
+    assert_eq!(got.components().len(), 3);
+    for (a, b) in got.components().iter().zip(src.components()) {
+        assert_eq!(a.direction(), b.direction());
+        assert_eq!(a.amplitude(), b.amplitude());
+        assert_eq!(a.phase(), b.phase());
+    }
+    assert_eq!(got.mode(), VibrationMode::Averaged);
+}
