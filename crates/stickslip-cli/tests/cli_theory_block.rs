@@ -126,8 +126,8 @@ fn bad_arguments_fail_cleanly() {
 #[test]
 fn theory_drive_reverses_with_the_phase_shift() {
     // Elliptical vibration drives the compliant contact: the free drive velocity and the
-    // blocking force have opposite signs and both flip with the phase shift; a zero shift
-    // (normal and tangential in phase, sine) is symmetric and does not drive.
+    // blocking force have opposite signs and both flip with the phase shift; oblique linear
+    // vibration (shift 0) drives too, and half a period later the other way.
     let v = json(&[
         "theory",
         "drive",
@@ -143,9 +143,11 @@ fn theory_drive_reverses_with_the_phase_shift() {
         "-0.25",
         "--phase-shift",
         "0",
+        "--phase-shift",
+        "0.5",
     ]);
     let points = v["points"].as_array().expect("points");
-    assert_eq!(points.len(), 3);
+    assert_eq!(points.len(), 4);
     let (vd, block) = (
         num(&points[0], "drive_velocity"),
         num(&points[0], "blocking"),
@@ -156,7 +158,12 @@ fn theory_drive_reverses_with_the_phase_shift() {
         "{v}"
     );
     assert!((num(&points[1], "blocking") + block).abs() < 1e-9, "{v}");
-    assert_eq!(num(&points[2], "drive_velocity"), 0.0, "{v}");
+    let oblique = num(&points[2], "drive_velocity");
+    assert!(oblique != 0.0, "{v}");
+    assert!(
+        (num(&points[3], "drive_velocity") + oblique).abs() < 1e-9 * oblique.abs(),
+        "{v}"
+    );
     // μ̄ at rest is the blocking force over F̄ (the band is a single point when it drives).
     assert!((num(&points[0], "mu_eff") - block).abs() < 1e-9, "{v}");
 }

@@ -54,7 +54,7 @@
 //!   resisted with μ̄ at the slip's component along x̂ (the table is one-dimensional). The
 //!   first contact of a new μ0 (or load band) computes its table (~10–100 ms).
 
-use std::sync::{Arc, RwLock};
+use std::sync::{Arc, OnceLock, RwLock};
 
 use serde::{Deserialize, Serialize};
 use stickslip_core::ParamError;
@@ -393,7 +393,7 @@ impl VibrationSource {
     /// The averaged-mode table of μ̄ over the dimensionless speed for `mu0` and mean normal
     /// force `f_mean` (computed on first use, then shared; `None` if the source is not
     /// averaged in-plane, the theory failed, or the cache is full).
-    pub(crate) fn drive_table(&self, mu0: f64, f_mean: f64) -> Option<Arc<DriveTable>> {
+    pub(crate) fn drive_table(&self, mu0: f64, f_mean: f64) -> Option<TableRef<'_>> {
         let cache = self.drive_tables.as_ref()?;
         let force_amplitudes = self
             .components
@@ -411,25 +411,31 @@ impl VibrationSource {
             (0, 1.0)
         };
         let key = (mu0.to_bits(), band);
+        let build = || {
+            self.excitation(mu0, f_key)
+                .and_then(|ex| DriveTable::new(mu0, &ex))
+                .ok()
+        };
+        // The first key (one material, ratio amplitudes: the usual case) without a lock.
+        let (first_key, first) = cache.first.get_or_init(|| (key, build()));
+        if *first_key == key {
+            return first.as_ref().map(TableRef::Borrowed);
+        }
         if let Ok(entries) = cache.entries.read()
             && let Some((_, t)) = entries.iter().find(|(k, _)| *k == key)
         {
-            return t.clone();
+            return t.clone().map(TableRef::Shared);
         }
         let mut entries = cache.entries.write().ok()?;
         if let Some((_, t)) = entries.iter().find(|(k, _)| *k == key) {
-            return t.clone();
+            return t.clone().map(TableRef::Shared);
         }
         if entries.len() >= MAX_DRIVE_TABLES {
             return None;
         }
-        let table = self
-            .excitation(mu0, f_key)
-            .and_then(|ex| DriveTable::new(mu0, &ex))
-            .ok()
-            .map(Arc::new);
+        let table = build().map(Arc::new);
         entries.push((key, table.clone()));
-        table
+        table.map(TableRef::Shared)
     }
 }
 
@@ -444,11 +450,29 @@ const DRIVE_DECADES_BELOW: f64 = 3.0;
 /// Decades above the amplitude scale where it ends (μ̄ is on its plateau long before).
 const DRIVE_DECADES_ABOVE: f64 = 3.0;
 
-/// The tables of one averaged in-plane source, shared by its clones.
+/// The tables of one averaged in-plane source, shared by its clones: the first key's
+/// lock-free, further ones (other μ0, load bands) behind a lock.
 #[derive(Debug, Default)]
 struct DriveCache {
+    first: OnceLock<((u64, i64), Option<DriveTable>)>,
     #[allow(clippy::type_complexity)]
     entries: RwLock<Vec<((u64, i64), Option<Arc<DriveTable>>)>>,
+}
+
+/// A table from a source's cache.
+pub(crate) enum TableRef<'a> {
+    Borrowed(&'a DriveTable),
+    Shared(Arc<DriveTable>),
+}
+
+impl std::ops::Deref for TableRef<'_> {
+    type Target = DriveTable;
+    fn deref(&self) -> &DriveTable {
+        match self {
+            TableRef::Borrowed(t) => t,
+            TableRef::Shared(t) => t,
+        }
+    }
 }
 
 /// μ̄(u) of the compliant theory over the signed dimensionless speed u = v k_t/(μ0 F̄ f),
