@@ -5,7 +5,10 @@
 //! prints its mean speed after 120 periods beside the compliant theory's free drive velocity
 //! (`stickslip_core::popov::free_drive_velocity`) and the blocking force, for several phase
 //! shifts, with a time-resolved (400 steps per period) and an averaged (40 steps per period)
-//! source. The direction reverses with the sign of the phase shift.
+//! source. Between ±90° (the ellipse turning one way or the other) the direction reverses;
+//! in general half a period more shift reverses it (v(s + ½) = −v(s)), while e.g. ±0.1 lie on
+//! the same side of the theory's zero crossings (s ≈ 0.19 and −0.31): near-oblique linear
+//! vibration (s = 0) drives too. `stickslip theory drive` prints the whole curve.
 //!
 //! Run: `cargo run --release --example elliptical_drive`
 

@@ -2,7 +2,7 @@
 //! (Popov's spring contact, `stickslip_core::popov::{mean_friction, free_drive_velocity}`). A
 //! sled on a plate that carries a vibration source, with the default `StickSlipConfig` and
 //! the elasto-plastic law in the seed's sharp limit (its stiffness c F̄ is the theory's k_x):
-//! dragged at imposed speeds under tangential (and transverse) vibration alone, the measured
+//! dragged at imposed speeds under tangential vibration alone (and transverse), the measured
 //! μ̄(v0) = −⟨F_x⟩/⟨F_z⟩ is the theory's within 3 % on a grid of amplitudes (contacts that can
 //! stick and contacts that slide in place) and speeds; under elliptical vibration (normal and
 //! tangential, a phase shift apart) the sled held at rest feels the theory's blocking force,
@@ -13,8 +13,9 @@
 //! 9.81 N) rides the contact spring at 5 Hz, a tenth of the vibration's 50 Hz, so it is the
 //! theory's quasi-static slider.
 
-use stickslip::rapier::VibrationMode;
+use stickslip::core::waveform::Waveform;
 use stickslip::rapier::scenes::VibratingPlate;
+use stickslip::rapier::{Amplitude, VibrationComponent, VibrationDirection, VibrationMode};
 
 const MODES: [VibrationMode; 2] = [VibrationMode::TimeResolved, VibrationMode::Averaged];
 
@@ -114,12 +115,8 @@ fn elliptical_vibration_drives_the_sled_at_the_theory_s_free_drive_velocity() {
 #[test]
 fn superimposed_sources_are_validated_and_survive_a_snapshot() {
     use stickslip::core::law::Law;
-    use stickslip::core::waveform::Waveform;
     use stickslip::rapier::scenes::BoxOnGround;
-    use stickslip::rapier::{
-        Amplitude, FrictionMaterial, StickSlip, VibrationComponent, VibrationDirection,
-        VibrationSource,
-    };
+    use stickslip::rapier::{FrictionMaterial, StickSlip, VibrationSource};
     let comp = |d, a, phase| {
         VibrationComponent::new(d, Amplitude::Ratio(a), Waveform::Sine, phase).unwrap()
     };

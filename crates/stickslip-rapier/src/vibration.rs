@@ -52,7 +52,9 @@
 //!   solver then pushes towards v_d with the theory's force on either side: a free slider
 //!   runs at v_d, a held one feels the blocking force, a dragged one μ̄(v). Slip across x̂ is
 //!   resisted with μ̄ at the slip's component along x̂ (the table is one-dimensional). The
-//!   first contact of a new μ0 (or load band) computes its table (~10–100 ms).
+//!   first contact of a new μ0 (or load band) computes the band and v_d (a few ms), the grid
+//!   points (16 per decade of u, Catmull-Rom between them) are computed when a contact first
+//!   needs them, then shared: no allocation in the step.
 
 use std::sync::{Arc, OnceLock, RwLock};
 
@@ -477,16 +479,21 @@ impl std::ops::Deref for TableRef<'_> {
 
 /// μ̄(u) of the compliant theory over the signed dimensionless speed u = v k_t/(μ0 F̄ f),
 /// along the theory's x (see the module docs), with the static band at u = 0 and the free
-/// drive velocity.
-#[derive(Debug, Clone)]
+/// drive velocity. The band and the drive velocity are computed with the table; the points of
+/// the log grid when first needed (a contact only ever visits the few around its speeds).
+#[derive(Debug)]
 pub(crate) struct DriveTable {
+    contact: popov::CompliantContact,
+    excitation: popov::Excitation,
     log_u0: f64,
     step: f64,
     /// μ̄ at u = +e^(log_u0 + i step).
-    positive: Vec<f64>,
-    /// μ̄ at u = −e^(log_u0 + i step).
-    negative: Vec<f64>,
-    /// μ̄(0−), μ̄(0+).
+    positive: Vec<OnceLock<f64>>,
+    /// μ̄ at u = −e^(log_u0 + i step) (mirrored from `positive` without a tangential
+    /// component).
+    negative: Vec<OnceLock<f64>>,
+    signed: bool,
+    /// μ̄(0−).
     pub lower: f64,
     /// μ̄(0+).
     pub upper: f64,
@@ -506,33 +513,50 @@ impl DriveTable {
             + 1;
         let step = std::f64::consts::LN_10 / DRIVE_POINTS_PER_DECADE as f64;
         let signed = ex.tangential.is_some();
-        let side = |sign: f64| {
-            (0..n)
-                .map(|i| {
-                    popov::mean_friction(&contact, ex, 1.0, sign * (log_u0 + step * i as f64).exp())
-                })
-                .collect::<Result<Vec<_>, _>>()
-        };
-        let positive = side(1.0)?;
-        let negative = if signed {
-            side(-1.0)?
-        } else {
-            positive.iter().map(|m| -m).collect()
-        };
+        // The largest speed must be one the theory takes.
+        popov::mean_friction(&contact, ex, 1.0, (log_u0 + step * (n - 1) as f64).exp())?;
         let band = popov::static_friction_compliant(&contact, ex)?;
         let drive = if signed && band.drive() != 0.0 {
             popov::free_drive_velocity(&contact, ex, 1.0)?.unwrap_or(0.0)
         } else {
             0.0
         };
+        let cells = |k: usize| (0..k).map(|_| OnceLock::new()).collect::<Vec<_>>();
         Ok(DriveTable {
+            contact,
+            excitation: ex.clone(),
             log_u0,
             step,
-            positive,
-            negative,
+            positive: cells(n),
+            negative: cells(if signed { n } else { 0 }),
+            signed,
             lower: band.lower,
             upper: band.upper,
             drive,
+        })
+    }
+
+    /// μ̄ at grid point `i` on the side `negative`: computed once; a speed the theory cannot
+    /// settle (e.g. a transverse offset creeping at the slowest speeds) takes the next faster
+    /// point's value.
+    fn point(&self, negative: bool, i: usize) -> f64 {
+        if negative && !self.signed {
+            return -self.point(false, i);
+        }
+        let cells = if negative {
+            &self.negative
+        } else {
+            &self.positive
+        };
+        let last = cells.len() - 1;
+        *cells[i].get_or_init(|| {
+            let sign = if negative { -1.0 } else { 1.0 };
+            let u = sign * (self.log_u0 + self.step * i as f64).exp();
+            match popov::mean_friction(&self.contact, &self.excitation, 1.0, u) {
+                Ok(mu) => mu,
+                Err(_) if i < last => self.point(negative, i + 1),
+                Err(_) => sign * self.contact.mu0(),
+            }
         })
     }
 
@@ -541,29 +565,33 @@ impl DriveTable {
         if u.is_nan() {
             return self.upper;
         }
-        let (values, at_zero) = if u >= 0.0 {
-            (&self.positive, self.upper)
+        let (negative, at_zero) = if u >= 0.0 {
+            (false, self.upper)
         } else {
-            (&self.negative, self.lower)
+            (true, self.lower)
         };
         let a = u.abs();
         let u0 = self.log_u0.exp();
         if a <= u0 {
-            return at_zero + (values[0] - at_zero) * a / u0;
+            return at_zero + (self.point(negative, 0) - at_zero) * a / u0;
         }
         let x = (a.ln() - self.log_u0) / self.step;
-        let last = values.len() - 1;
+        let last = self.positive.len() - 1;
         if x >= last as f64 {
-            return values[last];
+            return self.point(negative, last);
         }
         // Catmull-Rom on the uniform log grid (one-sided at the ends), kept inside the two
         // neighbours' range so a kink (the onset of pure sliding) is not overshot.
         let i = (x.floor() as usize).min(last - 1);
         let w = (x - i as f64).clamp(0.0, 1.0);
-        let (p1, p2) = (values[i], values[i + 1]);
-        let p0 = if i > 0 { values[i - 1] } else { 2.0 * p1 - p2 };
+        let (p1, p2) = (self.point(negative, i), self.point(negative, i + 1));
+        let p0 = if i > 0 {
+            self.point(negative, i - 1)
+        } else {
+            2.0 * p1 - p2
+        };
         let p3 = if i + 2 <= last {
-            values[i + 2]
+            self.point(negative, i + 2)
         } else {
             2.0 * p2 - p1
         };
