@@ -39,6 +39,30 @@ enum TheoryCommand {
         #[arg(long)]
         mu0: f64,
     },
+    /// Elliptical drive over the phase shift (compliant theory): normal amplitude α and a
+    /// tangential one in slip lengths μ0 k_z ū_z / k_x, the tangential one a phase shift later.
+    /// Prints the static band, the blocking force (over F̄), μ̄ at `--speed` and the free drive
+    /// velocity (over slip length × frequency) per phase shift.
+    Drive {
+        /// Normal amplitude α = A_z/ū_z.
+        #[arg(long)]
+        alpha: f64,
+        /// Tangential amplitude in slip lengths.
+        #[arg(long)]
+        tangential: f64,
+        /// Coefficient of friction without vibration.
+        #[arg(long)]
+        mu0: f64,
+        /// Waveform of both oscillations.
+        #[arg(long, value_parser = parse_waveform, default_value = "sine")]
+        waveform: WaveformKind,
+        /// Drag speed (slip lengths per period) at which μ̄ is reported.
+        #[arg(long, default_value_t = 0.0)]
+        speed: f64,
+        /// Phase shifts (periods), repeatable; default: 17 from −0.5 to 0.5.
+        #[arg(long = "phase-shift", allow_hyphen_values = true)]
+        phase_shift: Vec<f64>,
+    },
     /// Static coefficient under oscillation (Eq. 4, 6, 8).
     Static {
         /// Direction of the oscillation.
@@ -88,6 +112,19 @@ struct MuEffReport {
     psi: f64,
     mu_eff: f64,
 }
+
+#[derive(Serialize)]
+struct DriveReport {
+    waveform: String,
+    alpha: f64,
+    tangential: f64,
+    mu0: f64,
+    speed: f64,
+    points: Vec<popov::DrivePoint>,
+}
+
+/// Most phase shifts one `theory drive` evaluates.
+const MAX_SHIFTS: usize = 1000;
 
 #[derive(Serialize)]
 struct StaticReport {
@@ -156,6 +193,42 @@ pub fn run(args: &TheoryArgs, json: bool) -> Result<(), CliError> {
                 ("psi", format!("{:.6}", r.psi)),
                 ("mu_eff (Eq. 33)", format!("{:.6}", r.mu_eff)),
             ]);
+        }
+        TheoryCommand::Drive {
+            alpha,
+            tangential,
+            mu0,
+            waveform,
+            speed,
+            phase_shift,
+        } => {
+            let shifts: Vec<f64> = if phase_shift.is_empty() {
+                (0..=16).map(|i| -0.5 + i as f64 / 16.0).collect()
+            } else {
+                phase_shift.iter().take(MAX_SHIFTS).copied().collect()
+            };
+            let w = Waveform::from(*waveform);
+            let r = DriveReport {
+                waveform: waveform.to_string(),
+                alpha: *alpha,
+                tangential: *tangential,
+                mu0: *mu0,
+                speed: *speed,
+                points: popov::drive_curve(*mu0, *alpha, *tangential, &w, *speed, &shifts)?,
+            };
+            if json {
+                return output::json(&r);
+            }
+            output::line(format_args!(
+                "{:>8} {:>9} {:>9} {:>9} {:>9} {:>10}",
+                "shift", "mu_lower", "mu_upper", "blocking", "mu_eff", "v_drive"
+            ));
+            for p in &r.points {
+                output::line(format_args!(
+                    "{:>8.4} {:>9.5} {:>9.5} {:>9.5} {:>9.5} {:>10.5}",
+                    p.phase_shift, p.lower, p.upper, p.blocking, p.mu_eff, p.drive_velocity
+                ));
+            }
         }
         TheoryCommand::Static {
             direction,

@@ -122,3 +122,48 @@ fn bad_arguments_fail_cleanly() {
         assert!(err.contains("error"), "{args:?}: no message: {err}");
     }
 }
+
+#[test]
+fn theory_drive_reverses_with_the_phase_shift() {
+    // Elliptical vibration drives the compliant contact: the free drive velocity and the
+    // blocking force have opposite signs and both flip with the phase shift; oblique linear
+    // vibration (shift 0) drives too, and half a period later the other way.
+    let v = json(&[
+        "theory",
+        "drive",
+        "--alpha",
+        "0.6",
+        "--tangential",
+        "1.5",
+        "--mu0",
+        "0.5",
+        "--phase-shift",
+        "0.25",
+        "--phase-shift",
+        "-0.25",
+        "--phase-shift",
+        "0",
+        "--phase-shift",
+        "0.5",
+    ]);
+    let points = v["points"].as_array().expect("points");
+    assert_eq!(points.len(), 4);
+    let (vd, block) = (
+        num(&points[0], "drive_velocity"),
+        num(&points[0], "blocking"),
+    );
+    assert!(vd > 0.0 && block < 0.0, "{v}");
+    assert!(
+        (num(&points[1], "drive_velocity") + vd).abs() < 1e-9 * vd,
+        "{v}"
+    );
+    assert!((num(&points[1], "blocking") + block).abs() < 1e-9, "{v}");
+    let oblique = num(&points[2], "drive_velocity");
+    assert!(oblique != 0.0, "{v}");
+    assert!(
+        (num(&points[3], "drive_velocity") + oblique).abs() < 1e-9 * oblique.abs(),
+        "{v}"
+    );
+    // μ̄ at rest is the blocking force over F̄ (the band is a single point when it drives).
+    assert!((num(&points[0], "mu_eff") - block).abs() < 1e-9, "{v}");
+}

@@ -207,6 +207,13 @@ impl<H: PhysicsHooks> StickSlip<H> {
             .or_else(|| self.materials.get(c2))
             .unwrap_or(&self.default_material);
         let source = self.vibrations.get(c1).or_else(|| self.vibrations.get(c2));
+        // The source moves its own collider's surface: the base of the other body oscillates
+        // by −u relative to it, in the slip convention (body 2 relative to body 1) by ∓u.
+        let rel = if self.vibrations.get(c1).is_some() {
+            -1.0
+        } else {
+            1.0
+        };
         let law = &material.law;
         let Some(m) = ctx.rigid_mut() else { return };
         let dt = self.clock.dt;
@@ -249,6 +256,10 @@ impl<H: PhysicsHooks> StickSlip<H> {
         let t_mid = self.clock.time + 0.5 * dt;
 
         let mut limit;
+        // A friction direction the solver must take (compliant in-plane vibration), and a
+        // target slip velocity (averaged in-plane vibration: the free drive velocity).
+        let mut directed: Option<Vec2> = None;
+        let mut averaged_target: Option<Vec2> = None;
         if !(f_n > 0.0 && f_n.is_finite()) {
             // No load: a new contact, or one that lost its load (flight, separation inside
             // the prediction distance). An unloaded spring relaxes (the law's state goes to
@@ -267,7 +278,7 @@ impl<H: PhysicsHooks> StickSlip<H> {
                 _ => law.static_coefficient(),
             };
             if let Some(s) = source {
-                limit *= static_factor(s, limit, None, t_mid);
+                limit *= static_factor(s, limit, None);
             }
         } else {
             // Mean normal force for the tangential stiffness: filtered, seeded at first load.
@@ -284,6 +295,16 @@ impl<H: PhysicsHooks> StickSlip<H> {
             let vib = source.map_or(Vibrated { normal_factor: 1.0 }, |s| {
                 normal_modulation(s, f_n, t_mid)
             });
+            // Time-resolved in-plane vibration on a compliant law while slipping: the law
+            // integrates the seed's spring force S = s + a (see `vibration`).
+            let compliant = match (source, law) {
+                (Some(s), Law::ElastoPlastic(l))
+                    if s.mode() == VibrationMode::TimeResolved && s.has_in_plane() =>
+                {
+                    Some((s, l.c() * f_mean))
+                }
+                _ => None,
+            };
             let f_eff = f_n * vib.normal_factor;
             let measured = vec2::scale(basis.project(meas.mu), f_n);
             let input = |slip: Vec2| StepInput {
@@ -299,7 +320,13 @@ impl<H: PhysicsHooks> StickSlip<H> {
             // contact slipped, and the law integrates the slip from its own state.
             let mu_meas = vec2::norm(basis.project(meas.mu));
             let saturated = rec.limit > 0.0 && mu_meas >= (1.0 - SATURATION) * rec.limit as f64;
-            holding = !saturated && !regul;
+            // A compliant contact under in-plane vibration cannot hold once the spring force
+            // it carries, s + a(t), leaves the friction circle (Eq. 9): it slips now.
+            let overloaded = compliant.is_some_and(|(s, _)| {
+                let a = in_plane_force(s, f_mean, &basis, rel, t_mid);
+                vec2::norm(vec2::add(measured, a)) > law.static_coefficient() * f_eff
+            });
+            holding = !saturated && !regul && !overloaded;
             let mut state = if holding {
                 FrictionState::with_force(measured)
             } else {
@@ -321,7 +348,20 @@ impl<H: PhysicsHooks> StickSlip<H> {
                 } else {
                     1.0
                 };
-                law.step(&mut state, &input(vec2::scale(slip, dt * ahead)))
+                let g = vec2::scale(slip, dt * ahead);
+                match compliant {
+                    Some((s, k_t)) if k_t > 0.0 && k_t.is_finite() => {
+                        let t0 = self.clock.time;
+                        let a0 = in_plane_force(s, f_mean, &basis, rel, t0);
+                        let a1 = in_plane_force(s, f_mean, &basis, rel, t0 + dt);
+                        state.force = vec2::add(state.force, a0);
+                        let g = vec2::add(g, vec2::scale(vec2::sub(a1, a0), 1.0 / k_t));
+                        let out = law.step(&mut state, &input(g));
+                        state.force = vec2::sub(state.force, a1);
+                        out
+                    }
+                    _ => law.step(&mut state, &input(g)),
+                }
             };
             rec.force = basis.lift(state.force);
             rec.slide = state.slide as f32;
@@ -338,8 +378,21 @@ impl<H: PhysicsHooks> StickSlip<H> {
                 vec2::norm(out.mu)
             };
             limit = mu_law * vib.normal_factor;
-            if let Some(s) = source {
-                limit = in_plane_limit(s, limit, f_n, &basis, out.mu, slip, t_mid, holding, law);
+            if compliant.is_some() && !holding {
+                // The bodies feel the elastic part s of the spring force, exactly.
+                limit = vec2::norm(state.force) / f_n;
+                if let Some(dir) = vec2::normalize(state.force) {
+                    let along = vec2::normalize(slip).map_or(0.0, |e| vec2::dot(e, dir));
+                    if along < ALIGNED {
+                        directed = Some(dir);
+                    }
+                }
+            } else if let Some(s) = source {
+                let (l, target) = in_plane_limit(
+                    s, limit, f_n, f_mean, rel, &basis, out.mu, slip, t_mid, holding, law,
+                );
+                limit = l;
+                averaged_target = target;
             }
         }
         // Regul has no sticking: realized implicitly, the solver gets the full sliding level
@@ -360,6 +413,26 @@ impl<H: PhysicsHooks> StickSlip<H> {
         }
         *m.friction = limit.max(0.0) as f32;
         rec.limit = *m.friction;
+        if let Some(dir) = directed {
+            // Saturate the solver along −ŝ: a target relative velocity far beyond what one
+            // step's friction impulse |s| dt can reach, so the friction is exactly −s.
+            let inv = inv_mass(bodies, rb1) + inv_mass(bodies, rb2);
+            let reach = DIRECT_MARGIN * limit * f_n * dt * inv + speed;
+            let v = basis.lift(vec2::sub(slip, vec2::scale(dir, reach)));
+            if v.is_finite() {
+                for c in m.solver_contacts.iter_mut() {
+                    c.tangent_velocity += v;
+                }
+            }
+        }
+        if let Some(target) = averaged_target {
+            let v = basis.lift(target);
+            if v.is_finite() {
+                for c in m.solver_contacts.iter_mut() {
+                    c.tangent_velocity += v;
+                }
+            }
+        }
         rec.slip_speed = if holding { 0.0 } else { speed as f32 };
 
         // Stick anchors: correct drift while holding, follow the contact while slipping.
@@ -390,11 +463,27 @@ impl<H: PhysicsHooks> StickSlip<H> {
     }
 }
 
+/// Relative margin by which a directed friction's target velocity outruns what the step's
+/// friction impulse can reach (covers the rotational part of the effective mass).
+const DIRECT_MARGIN: f64 = 1e3;
+/// Cosine between the spring force and the slip above which the solver's own direction
+/// (against the slip) is the law's.
+const ALIGNED: f64 = 0.999;
+
+fn inv_mass(bodies: &RigidBodySet, h: Option<RigidBodyHandle>) -> f64 {
+    h.and_then(|h| bodies.get(h))
+        .filter(|b| b.is_dynamic())
+        .map_or(0.0, |b| {
+            let m = b.mass() as f64;
+            if m > 0.0 { 1.0 / m } else { 0.0 }
+        })
+}
+
 /// Time-resolved normal vibration: F_n(t) = F̄ (1 + A/F̄ w)⁺.
 fn normal_modulation(s: &VibrationSource, f_mean: f64, t: f64) -> Vibrated {
-    let factor = match (s.direction(), s.mode()) {
-        (VibrationDirection::Normal, VibrationMode::TimeResolved) => {
-            (1.0 + s.force_amplitude(f_mean) / f_mean * s.signal(t)).max(0.0)
+    let factor = match (s.normal(), s.mode()) {
+        (Some(c), VibrationMode::TimeResolved) => {
+            (1.0 + c.amplitude().force(f_mean) / f_mean * s.component_signal(c, t)).max(0.0)
         }
         _ => 1.0,
     };
@@ -403,93 +492,184 @@ fn normal_modulation(s: &VibrationSource, f_mean: f64, t: f64) -> Vibrated {
     }
 }
 
-/// Static (holding) factor of a source before any load is known, or in averaged mode.
-fn static_factor(s: &VibrationSource, mu0: f64, f_mean: Option<f64>, t: f64) -> f64 {
+/// The in-plane part a⃗(t) = Σ ± A_i w_i ê_i of the contact spring's force (N), in the slip
+/// convention (`rel` = −1 when the source is on collider 1).
+fn in_plane_force(
+    s: &VibrationSource,
+    f_mean: f64,
+    basis: &TangentBasis,
+    rel: f64,
+    t: f64,
+) -> Vec2 {
+    let mut a = [0.0; 2];
+    for c in s.components() {
+        let Some(axis) = c.direction().axis() else {
+            continue;
+        };
+        let Some(e) = vec2::normalize(basis.project(Vector::new(axis[0], axis[1], axis[2]))) else {
+            continue;
+        };
+        let w = rel * c.amplitude().force(f_mean) * s.component_signal(c, t);
+        a = vec2::add(a, vec2::scale(e, w));
+    }
+    a
+}
+
+/// Static (holding) factor of a source before any load is known, or in averaged mode
+/// without a table: Eq. 4 on the normal component, then Eq. 8 and Eq. 6 on what is left (each
+/// exact alone).
+fn static_factor(s: &VibrationSource, mu0: f64, f_mean: Option<f64>) -> f64 {
     let Some(f) = f_mean.filter(|f| *f > 0.0) else {
         return 1.0;
     };
-    let ratio = s.force_amplitude(f) / f;
     if mu0 <= 0.0 {
         return 1.0;
     }
-    let _ = t;
-    match s.direction() {
-        VibrationDirection::Normal => (1.0 - ratio).max(0.0),
-        VibrationDirection::Tangential { .. } => ((mu0 - ratio) / mu0).max(0.0),
-        VibrationDirection::Transverse { .. } => (mu0 * mu0 - ratio * ratio).max(0.0).sqrt() / mu0,
+    let (mut z, mut x, mut y) = (0.0f64, 0.0f64, 0.0f64);
+    for c in s.components() {
+        let ratio = c.amplitude().force(f) / f;
+        match c.direction() {
+            VibrationDirection::Normal => z = ratio,
+            VibrationDirection::Tangential { .. } => x = ratio,
+            VibrationDirection::Transverse { .. } => y = ratio,
+        }
     }
+    let cap = mu0 * (1.0 - z).max(0.0);
+    let cap = if y > 0.0 {
+        (cap * cap - y * y).max(0.0).sqrt()
+    } else {
+        cap
+    };
+    ((cap - x) / mu0).max(0.0)
 }
 
-/// The limit after in-plane vibration (time-resolved) or Popov averaging (averaged mode).
+/// The limit after in-plane vibration (time-resolved, rigid) or Popov averaging (averaged
+/// mode), and the target slip velocity of an averaged in-plane source.
 #[allow(clippy::too_many_arguments)]
 fn in_plane_limit(
     s: &VibrationSource,
     limit: f64,
     f_n: f64,
+    f_mean: f64,
+    rel: f64,
     basis: &TangentBasis,
     mu_state: Vec2,
     slip: Vec2,
     t: f64,
     holding: bool,
     law: &Law,
-) -> f64 {
+) -> (f64, Option<Vec2>) {
     match s.mode() {
+        VibrationMode::Averaged if s.has_in_plane() => {
+            averaged_in_plane(s, limit, f_mean, rel, basis, mu_state, slip, holding, law)
+        }
         VibrationMode::Averaged => {
             if holding {
-                return limit * static_factor(s, limit, Some(f_n), t);
+                return (limit * static_factor(s, limit, Some(f_n)), None);
             }
-            match s.direction() {
-                VibrationDirection::Normal => {
-                    let a_f = s.force_amplitude(f_n);
-                    let alpha = a_f / f_n;
-                    // Popov's averaged sliding friction μ̄ = μ_k (1 − α Ψ_w(β)) with the law's
-                    // sliding coefficient at this speed: continuous with the static
-                    // μ_k (1 − α) as the slip speed goes to 0 (Ψ_w(0) = 1).
-                    let speed = vec2::norm(slip);
-                    let mu0 = law.sliding_coefficient(speed).max(1e-12);
-                    let k_t = s.tangential_stiffness().or(match law {
-                        Law::ElastoPlastic(l) => Some(l.c() * f_n),
-                        _ => None,
-                    });
-                    let psi = match k_t {
-                        Some(k) if a_f > 0.0 => s.psi(k * speed / (mu0 * a_f * s.frequency())),
-                        _ => 0.0,
-                    };
-                    mu0 * (1.0 - alpha * psi).max(0.0)
-                }
-                // In-plane: the oscillating force adds to whatever the contact carries, so a
-                // slipping contact (at rest or slow, where its law state holds it elastically)
-                // yields at the same reduced level as a held one (Eq. 6, 8). Popov gives no
-                // closed form of the sliding friction for in-plane vibration; at high slip
-                // speed this underestimates it (issue: superimposed vibration).
-                _ => limit * static_factor(s, limit, Some(f_n), t),
-            }
+            let a_f = s.force_amplitude(f_n);
+            let alpha = a_f / f_n;
+            // Popov's averaged sliding friction μ̄ = μ_k (1 − α Ψ_w(β)) with the law's
+            // sliding coefficient at this speed: continuous with the static
+            // μ_k (1 − α) as the slip speed goes to 0 (Ψ_w(0) = 1).
+            let speed = vec2::norm(slip);
+            let mu0 = law.sliding_coefficient(speed).max(1e-12);
+            let k_t = s.tangential_stiffness().or(match law {
+                Law::ElastoPlastic(l) => Some(l.c() * f_n),
+                _ => None,
+            });
+            let psi = match k_t {
+                Some(k) if a_f > 0.0 => s.psi(k * speed / (mu0 * a_f * s.frequency())),
+                _ => 0.0,
+            };
+            (mu0 * (1.0 - alpha * psi).max(0.0), None)
         }
         VibrationMode::TimeResolved => {
-            let axis = match s.direction() {
-                VibrationDirection::Normal => return limit,
-                VibrationDirection::Tangential { axis }
-                | VibrationDirection::Transverse { axis } => Vector::new(axis[0], axis[1], axis[2]),
-            };
-            let Some(e) = vec2::normalize(basis.project(axis)) else {
-                return limit;
-            };
-            let a = vec2::scale(e, s.force_amplitude(f_n) * s.signal(t));
+            if !s.has_in_plane() {
+                return (limit, None);
+            }
+            let a = in_plane_force(s, f_n, basis, rel, t);
             let cap = limit * f_n;
             // Direction of the steady friction on body 2: against the state, else the slip.
+            // It carries f⃗ = r d̂ with the spring force s⃗ = −f⃗: |−r d̂ + a⃗| ≤ cap.
             let d = vec2::normalize(vec2::scale(mu_state, -1.0))
                 .or_else(|| vec2::normalize(vec2::scale(slip, -1.0)));
             let r = match d {
                 Some(d) => {
                     let along = vec2::dot(a, d);
                     let across = vec2::norm(vec2::sub(a, vec2::scale(d, along)));
-                    (cap * cap - across * across).max(0.0).sqrt() - along
+                    (cap * cap - across * across).max(0.0).sqrt() + along
                 }
                 None => (cap * cap - vec2::dot(a, a)).max(0.0).sqrt(),
             };
-            (r / f_n).max(0.0)
+            ((r / f_n).max(0.0), None)
         }
     }
+}
+
+/// Averaged in-plane (and superimposed) vibration from the compliant theory's table: the
+/// limit |μ̄(u)| and the target slip velocity v_d x̂ (see `vibration`).
+#[allow(clippy::too_many_arguments)]
+fn averaged_in_plane(
+    s: &VibrationSource,
+    limit: f64,
+    f_mean: f64,
+    rel: f64,
+    basis: &TangentBasis,
+    mu_state: Vec2,
+    slip: Vec2,
+    holding: bool,
+    law: &Law,
+) -> (f64, Option<Vec2>) {
+    let mu0 = law.static_coefficient();
+    let Some(table) = s.drive_table(mu0, f_mean) else {
+        return (limit * static_factor(s, limit, Some(f_mean)), None);
+    };
+    // The theory's x̂ in the slip convention: the other body's base moves by +A w along it.
+    let tangential = s.components().iter().find_map(|c| match c.direction() {
+        VibrationDirection::Tangential { axis } => Some(axis),
+        _ => None,
+    });
+    let x = match tangential {
+        Some(axis) => vec2::normalize(basis.project(Vector::new(axis[0], axis[1], axis[2])))
+            .map(|e| vec2::scale(e, rel)),
+        None => vec2::normalize(slip).or_else(|| vec2::normalize(mu_state)),
+    };
+    let Some(x) = x else {
+        return (table.upper.abs(), None);
+    };
+    // u = v k_t / (μ0 F̄ f); without a stiffness the rigid limit (u = ±∞ once moving).
+    let k_t = s.tangential_stiffness().or(match law {
+        Law::ElastoPlastic(l) => Some(l.c() * f_mean),
+        _ => None,
+    });
+    let unit = k_t.map(|k| mu0 * f_mean * s.frequency() / k);
+    let mu = if holding {
+        let load = vec2::dot(mu_state, x);
+        if load > 0.0 {
+            table.upper
+        } else if load < 0.0 {
+            table.lower
+        } else if table.upper < 0.0 {
+            table.upper
+        } else if table.lower > 0.0 {
+            table.lower
+        } else {
+            table.upper
+        }
+    } else {
+        let v = vec2::dot(slip, x);
+        match unit {
+            Some(unit) => table.eval(v / unit),
+            None if v == 0.0 => table.upper,
+            None => table.eval(v.signum() * f64::INFINITY),
+        }
+    };
+    let target = match unit {
+        Some(unit) if table.drive != 0.0 => Some(vec2::scale(x, table.drive * unit)),
+        _ => None,
+    };
+    (mu.abs(), target)
 }
 
 /// The read-back of one manifold after the step.

@@ -58,8 +58,9 @@ pub use modifier::{
 pub use report::{ContactReport, WorldTotals};
 pub use snapshot::{SnapshotError, StickSlipSnapshot, WorldSnapshot};
 pub use vibration::{
-    Amplitude, MAX_FORCE, MAX_FREQUENCY, MAX_RATIO, MAX_TANGENTIAL_STIFFNESS, VibrationDirection,
-    VibrationMode, VibrationSource,
+    Amplitude, MAX_AXIS_COSINE, MAX_COMPONENTS, MAX_FORCE, MAX_FREQUENCY, MAX_RATIO,
+    MAX_TANGENTIAL_STIFFNESS, VibrationComponent, VibrationDirection, VibrationMode,
+    VibrationSource,
 };
 
 /// Re-export of the core crate.

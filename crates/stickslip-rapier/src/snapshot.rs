@@ -68,7 +68,9 @@ use crate::contact_store::{
 use crate::material::FrictionMaterial;
 use crate::modifier::{Clock, ReadBack, StickSlip, StickSlipConfig};
 use crate::report::{ContactReport, WorldTotals};
-use crate::vibration::{Amplitude, VibrationDirection, VibrationMode, VibrationSource};
+use crate::vibration::{
+    Amplitude, VibrationComponent, VibrationDirection, VibrationMode, VibrationSource,
+};
 use rapier3d::prelude::*;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use std::io::{Read, Write};
@@ -203,7 +205,9 @@ impl<'de> Deserialize<'de> for WaveformSnapshot {
     }
 }
 
-/// A vibration source's parameters (its Ψ table is rebuilt, deterministically, on restore).
+/// A vibration source's parameters (its tables are rebuilt, deterministically, on restore):
+/// the first component in the flat fields (the single-component format), any further ones in
+/// `more`.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 struct VibrationSnapshot {
     direction: VibrationDirection,
@@ -213,6 +217,17 @@ struct VibrationSnapshot {
     phase: f64,
     mode: VibrationMode,
     tangential_stiffness: Option<f64>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    more: Vec<ComponentSnapshot>,
+}
+
+/// A further component of a vibration source.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+struct ComponentSnapshot {
+    direction: VibrationDirection,
+    amplitude: Amplitude,
+    waveform: WaveformSnapshot,
+    phase: f64,
 }
 
 impl From<&VibrationSource> for VibrationSnapshot {
@@ -225,20 +240,36 @@ impl From<&VibrationSource> for VibrationSnapshot {
             phase: s.phase(),
             mode: s.mode(),
             tangential_stiffness: s.tangential_stiffness(),
+            more: s.components()[1..]
+                .iter()
+                .map(|c| ComponentSnapshot {
+                    direction: c.direction(),
+                    amplitude: c.amplitude(),
+                    waveform: WaveformSnapshot(c.waveform().clone()),
+                    phase: c.phase(),
+                })
+                .collect(),
         }
     }
 }
 
 impl VibrationSnapshot {
     fn to_source(&self) -> Result<VibrationSource, ParamError> {
-        let s = VibrationSource::new(
+        let mut components = vec![VibrationComponent::new(
             self.direction,
             self.amplitude,
-            self.frequency,
             self.waveform.0.clone(),
             self.phase,
-            self.mode,
-        )?;
+        )?];
+        for c in &self.more {
+            components.push(VibrationComponent::new(
+                c.direction,
+                c.amplitude,
+                c.waveform.0.clone(),
+                c.phase,
+            )?);
+        }
+        let s = VibrationSource::superimposed(&components, self.frequency, self.mode)?;
         match self.tangential_stiffness {
             Some(k) => s.with_tangential_stiffness(k),
             None => Ok(s),

@@ -9,6 +9,7 @@
 use std::cell::RefCell;
 
 use roots::{SimpleConvergency, find_root_brent};
+use serde::Serialize;
 
 use super::compliant::{
     CompliantContact, mean_friction, scaled, static_friction_compliant, steady_sliding,
@@ -93,4 +94,62 @@ pub fn free_drive_velocity(
         limit: ROOT_ITERATIONS,
     })?;
     Ok(Some(u.clamp(lo.min(hi), lo.max(hi)) * unit))
+}
+
+/// One phase shift of a [`drive_curve`], in the theory's units: forces over the mean normal
+/// force, speeds over the speed scale (slip length × frequency).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct DrivePoint {
+    /// Phase of the tangential oscillation after the normal one (periods).
+    pub phase_shift: f64,
+    /// μ̄(0−): the lower end of the static band.
+    pub lower: f64,
+    /// μ̄(0+): the upper end of the static band (the static coefficient, negative for a drive
+    /// towards +x).
+    pub upper: f64,
+    /// Blocking force over the mean normal force (0 if the contact rests; negative: driven
+    /// towards +x).
+    pub blocking: f64,
+    /// μ̄ at the requested drag speed.
+    pub mu_eff: f64,
+    /// Free drive velocity over the speed scale (0 if the contact rests).
+    pub drive_velocity: f64,
+}
+
+/// Drive under elliptical-type vibration over the phase shift: a normal oscillation of
+/// amplitude `alpha` (A_z/ū_z) and a tangential one of `tangential` slip lengths, both with
+/// `waveform`, the tangential one `phase_shift` periods later, on a contact with coefficient
+/// `mu0`; μ̄ at the drag speed `speed` (in speed scales). The data of the figure "μ̄ and drive
+/// speed over phase shift" and of `stickslip theory drive`.
+pub fn drive_curve(
+    mu0: f64,
+    alpha: f64,
+    tangential: f64,
+    waveform: &crate::waveform::Waveform,
+    speed: f64,
+    phase_shifts: &[f64],
+) -> Result<Vec<DrivePoint>, ParamError> {
+    use super::oscillation::Oscillation;
+    // Slip length 1, frequency 1: speeds are in speed scales.
+    let contact = CompliantContact::new(mu0, 1.0, mu0, 1.0)?;
+    phase_shifts
+        .iter()
+        .map(|&shift| {
+            let ex = Excitation {
+                normal: Some(Oscillation::new(alpha, waveform.clone(), 0.0)?),
+                tangential: Some(Oscillation::new(tangential, waveform.clone(), shift)?),
+                transverse: None,
+            };
+            let band = static_friction_compliant(&contact, &ex)?;
+            let mean_fz = steady_sliding(&contact, &ex, 1.0, 0.0)?.mean_fz;
+            Ok(DrivePoint {
+                phase_shift: shift,
+                lower: band.lower,
+                upper: band.upper,
+                blocking: band.drive() * mean_fz / contact.mean_normal_force(),
+                mu_eff: mean_friction(&contact, &ex, 1.0, speed)?,
+                drive_velocity: free_drive_velocity(&contact, &ex, 1.0)?.unwrap_or(0.0),
+            })
+        })
+        .collect()
 }

@@ -32,7 +32,7 @@ pub use compliant::{
     static_friction_compliant, steady_sliding,
 };
 pub use dimensionless::{alpha, beta_from_force, beta_from_springs, mu_eff};
-pub use drive::{blocking_force, free_drive_velocity};
+pub use drive::{DrivePoint, blocking_force, drive_curve, free_drive_velocity};
 pub use oscillation::{Excitation, Oscillation};
 pub use psi::{StickEvent, psi, psi_closed_form, psi_sine_eq37, psi_sine_eq38, stick_events};
 pub use spring_model::{SimulationOptions, SpringModel, SpringModelOutcome};
