@@ -41,9 +41,10 @@ type Drawer<'a> = dyn Fn(&Path, &str) -> Result<[PathBuf; 2], FigureError> + 'a;
 
 const SINGLE: (u32, u32) = (900, 600);
 const DOUBLE: (u32, u32) = (1200, 1200);
+const WIDE: (u32, u32) = (1400, 600);
 
 /// The figure names (files `NAME.png`/`NAME.svg`) [`generate`] writes, in order.
-pub const NAMES: [&str; 8] = [
+pub const NAMES: [&str; 9] = [
     "switch_function",
     "sliding_curves",
     "example1",
@@ -52,12 +53,14 @@ pub const NAMES: [&str; 8] = [
     "static_friction",
     "incline_creep",
     "feeder_speed",
+    "elliptical_drive",
 ];
 
 /// The pixel size of figure `name`.
 pub fn pixel_size(name: &str) -> (u32, u32) {
     match name {
         "example1" => DOUBLE,
+        "elliptical_drive" => WIDE,
         _ => SINGLE,
     }
 }
@@ -366,6 +369,68 @@ pub fn generate(out: &Path, size: Size, progress: &dyn Fn(&str)) -> Result<Summa
         ..LineChart::default()
     };
     save(&|d, n| plot::save(&chart, d, n, SINGLE), "feeder_speed")?;
+
+    progress("elliptical_drive");
+    // Popov's compliant contact under normal (α = 0.6) and tangential (1.5 slip lengths)
+    // sine oscillation, the tangential one `shift` periods later: the static band, the
+    // blocking force and the free drive velocity over the shift (stickslip_core::popov).
+    let n = if quick { 9 } else { 41 };
+    let shifts: Vec<f64> = (0..n).map(|i| -0.5 + i as f64 / (n - 1) as f64).collect();
+    let drive = stickslip_core::popov::drive_curve(
+        0.5,
+        0.6,
+        1.5,
+        &stickslip_core::waveform::Waveform::Sine,
+        1.0,
+        &shifts,
+    )?;
+    let series = |f: &dyn Fn(&stickslip_core::popov::DrivePoint) -> f64| {
+        drive
+            .iter()
+            .map(|p| (p.phase_shift, f(p)))
+            .collect::<Vec<_>>()
+    };
+    let grid = Grid {
+        title: Some(
+            "Elliptical vibration (normal α = 0.6, tangential 1.5 slip lengths, sine, μ0 = 0.5)"
+                .into(),
+        ),
+        cols: 2,
+        panels: vec![
+            LineChart {
+                title: "friction over the mean normal force".into(),
+                x_label: "phase shift of the tangential oscillation (periods)".into(),
+                y_label: "μ̄".into(),
+                series: vec![
+                    Series::new("static band, upper", &series(&|p| p.upper), Mark::Line, 0),
+                    Series::new("static band, lower", &series(&|p| p.lower), Mark::Line, 1),
+                    Series::new("blocking force / F̄", &series(&|p| p.blocking), Mark::Dashed, 2),
+                    Series::new(
+                        "μ̄ dragged at 1 speed scale",
+                        &series(&|p| p.mu_eff),
+                        Mark::Dashed,
+                        3,
+                    ),
+                ],
+                legend_lower: true,
+                ..LineChart::default()
+            },
+            LineChart {
+                title: "free drive velocity (no applied force)".into(),
+                x_label: "phase shift of the tangential oscillation (periods)".into(),
+                y_label: "velocity (slip lengths per period)".into(),
+                series: vec![Series::new(
+                    "theory",
+                    &series(&|p| p.drive_velocity),
+                    Mark::Line,
+                    0,
+                )],
+                legend_lower: true,
+                ..LineChart::default()
+            },
+        ],
+    };
+    save(&|d, n| plot::save(&grid, d, n, WIDE), "elliptical_drive")?;
 
     let summary = Summary {
         files,
