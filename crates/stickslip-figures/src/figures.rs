@@ -404,7 +404,12 @@ pub fn generate(out: &Path, size: Size, progress: &dyn Fn(&str)) -> Result<Summa
                 series: vec![
                     Series::new("static band, upper", &series(&|p| p.upper), Mark::Line, 0),
                     Series::new("static band, lower", &series(&|p| p.lower), Mark::Line, 1),
-                    Series::new("blocking force / F̄", &series(&|p| p.blocking), Mark::Dashed, 2),
+                    Series::new(
+                        "blocking force / F̄",
+                        &series(&|p| p.blocking),
+                        Mark::Dashed,
+                        2,
+                    ),
                     Series::new(
                         "μ̄ dragged at 1 speed scale",
                         &series(&|p| p.mu_eff),
