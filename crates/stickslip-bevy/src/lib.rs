@@ -108,6 +108,7 @@ pub mod prelude {
     pub use stickslip_core::law::{Law, Regime};
     pub use stickslip_core::waveform::Waveform;
     pub use stickslip_rapier::{
-        Amplitude, FrictionMaterial, VibrationDirection, VibrationMode, VibrationSource,
+        Amplitude, FrictionMaterial, VibrationComponent, VibrationDirection, VibrationMode,
+        VibrationSource,
     };
 }
