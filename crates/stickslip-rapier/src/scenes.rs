@@ -125,6 +125,33 @@ impl PhysicsHooks for Conveyor {
     }
 }
 
+/// A weightless 0.2 m sled of `mass` on a fixed plate, stepped at `dt`, its contact
+/// elasto-plastic in the seed's sharp limit (μ_ba = μ_max = μ0, flat curve) with stiffness `c`,
+/// per-contact reports on: the setup of [`PopovDrag`] and [`VibratingPlate`].
+fn sled_on_plate(
+    mass: f32,
+    dt: f64,
+    c: f64,
+    mu0: f64,
+) -> Result<(BoxScene, crate::StickSlip), stickslip_core::ParamError> {
+    use stickslip_core::law::Law;
+    use stickslip_core::sliding_curve::Curve;
+    let mut scene = BoxOnGround {
+        half: 0.1,
+        mass,
+        gravity: 0.0,
+        dt: dt as f32,
+        rotations: false,
+        ..BoxOnGround::default()
+    }
+    .build();
+    let law = Law::elasto_plastic(c, mu0, mu0, Curve::constant(mu0)?)?;
+    let mut modifier = crate::StickSlip::new(crate::FrictionMaterial::new(law))
+        .with_read_back(crate::ReadBack::Contacts);
+    modifier.attach(&mut scene.world.colliders, scene.ground, None);
+    Ok((scene, modifier))
+}
+
 /// How the normal force of a [`PopovDrag`] is modulated.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum PopovDrive {
@@ -190,23 +217,9 @@ impl PopovDrag {
 
     /// Measures μ̄ = ⟨F_x⟩/⟨F_z⟩ at `beta` after the spring has loaded up to the cone.
     pub fn measure(&self, beta: f64) -> Result<f64, stickslip_core::ParamError> {
-        use stickslip_core::law::Law;
-        use stickslip_core::sliding_curve::Curve;
         let f = self.frequency;
         let dt = 1.0 / (f * self.steps_per_period as f64);
-        let mut scene = BoxOnGround {
-            half: 0.1,
-            mass: self.sled_mass,
-            gravity: 0.0,
-            dt: dt as f32,
-            rotations: false,
-            ..BoxOnGround::default()
-        }
-        .build();
-        let law = Law::elasto_plastic(self.c, self.mu0, self.mu0, Curve::constant(self.mu0)?)?;
-        let mut modifier = crate::StickSlip::new(crate::FrictionMaterial::new(law))
-            .with_read_back(crate::ReadBack::Contacts);
-        modifier.attach(&mut scene.world.colliders, scene.ground, None);
+        let (mut scene, mut modifier) = sled_on_plate(self.sled_mass, dt, self.c, self.mu0)?;
         if let PopovDrive::Source(mode) = self.drive {
             let src = crate::VibrationSource::new(
                 crate::VibrationDirection::Normal,
@@ -582,24 +595,10 @@ impl VibratingPlate {
         warm: usize,
         periods: usize,
     ) -> Result<PlateMeasurement, stickslip_core::ParamError> {
-        use stickslip_core::law::Law;
-        use stickslip_core::sliding_curve::Curve;
         let f = self.frequency;
         let spp = self.steps_per_period.max(1);
         let dt = 1.0 / (f * spp as f64);
-        let mut scene = BoxOnGround {
-            half: 0.1,
-            mass: self.sled_mass,
-            gravity: 0.0,
-            dt: dt as f32,
-            rotations: false,
-            ..BoxOnGround::default()
-        }
-        .build();
-        let law = Law::elasto_plastic(self.c, self.mu0, self.mu0, Curve::constant(self.mu0)?)?;
-        let mut modifier = crate::StickSlip::new(crate::FrictionMaterial::new(law))
-            .with_read_back(crate::ReadBack::Contacts);
-        modifier.attach(&mut scene.world.colliders, scene.ground, None);
+        let (mut scene, mut modifier) = sled_on_plate(self.sled_mass, dt, self.c, self.mu0)?;
         let source = self.source()?;
         let normal = source.normal().cloned();
         modifier.set_vibration(scene.ground, source);

@@ -1,7 +1,38 @@
 //! Bracketed 1-D root and extremum search shared by the waveform normalization, Ψ_w(β) and the
-//! static-friction solver.
+//! static-friction solver; the Gauss–Legendre rule and the event-scan grid shared by Ψ_w(β) and
+//! the compliant contact's periodic orbit.
 
+use gauss_quad::GaussLegendre;
 use roots::{Convergency, find_root_brent};
+use std::num::NonZeroUsize;
+use std::sync::OnceLock;
+
+/// Order of the Gauss–Legendre rule of the period averages (exact for polynomials to degree 31
+/// on each panel).
+const QUAD_ORDER: NonZeroUsize = NonZeroUsize::new(16).unwrap();
+
+/// The shared 16-point Gauss–Legendre rule.
+pub(crate) fn quadrature() -> &'static GaussLegendre {
+    static RULE: OnceLock<GaussLegendre> = OnceLock::new();
+    RULE.get_or_init(|| GaussLegendre::new(QUAD_ORDER))
+}
+
+/// Points in (from, to], about 1/`per_unit` apart, ending exactly at `to` (the scan for sign
+/// changes between events).
+pub(crate) fn scan_grid(from: f64, to: f64, per_unit: f64) -> impl Iterator<Item = f64> {
+    let n = if to > from {
+        ((to - from) * per_unit).ceil().max(1.0) as usize
+    } else {
+        0
+    };
+    (1..=n).map(move |i| {
+        if i == n {
+            to
+        } else {
+            from + (to - from) * i as f64 / n as f64
+        }
+    })
+}
 
 /// Brent stopping rule: converge on x only (the y scale differs per caller), never give up
 /// early; the bisection fallback below covers the rare non-convergence.

@@ -24,10 +24,7 @@
 //! At zero drag speed a contact that sticks throughout has no unique steady state; the one
 //! returned is the limit v0 → 0± (the side is given): F is shifted until it touches the disc.
 
-use std::{num::NonZeroUsize, sync::OnceLock};
-
 use differential_equations::prelude::*;
-use gauss_quad::GaussLegendre;
 
 use super::numeric::{bracketed_root, golden_min};
 use super::oscillation::{Excitation, Oscillation};
@@ -35,8 +32,7 @@ use crate::error::ParamError;
 
 /// Scan points per period for the events of stick and one-axis slip.
 const SCAN_PER_PERIOD: f64 = 1024.0;
-/// Gauss–Legendre order per quadrature panel, and the longest panel (phase units).
-const QUAD_ORDER: NonZeroUsize = NonZeroUsize::new(16).unwrap();
+/// Longest Gauss–Legendre panel (phase units).
 const QUAD_PANEL: f64 = 1.0 / 32.0;
 /// Disc radius (scaled) below which the contact counts as lost.
 const R_LOST: f64 = 1e-12;
@@ -114,11 +110,6 @@ struct Sums {
     slipped: bool,
 }
 
-fn quadrature() -> &'static GaussLegendre {
-    static RULE: OnceLock<GaussLegendre> = OnceLock::new();
-    RULE.get_or_init(|| GaussLegendre::new(QUAD_ORDER))
-}
-
 /// ∫_lo^hi f by Gauss–Legendre panels no longer than [`QUAD_PANEL`].
 fn integrate(lo: f64, hi: f64, f: impl Fn(f64) -> f64) -> f64 {
     if !(hi > lo) {
@@ -130,25 +121,14 @@ fn integrate(lo: f64, hi: f64, f: impl Fn(f64) -> f64) -> f64 {
         .map(|i| {
             let a = lo + width * i as f64;
             let b = if i + 1 == panels { hi } else { a + width };
-            quadrature().integrate(a, b, &f)
+            super::numeric::quadrature().integrate(a, b, &f)
         })
         .sum()
 }
 
 /// Points in (from, to], about 1/SCAN_PER_PERIOD apart, ending exactly at `to`.
 fn grid(from: f64, to: f64) -> impl Iterator<Item = f64> {
-    let n = if to > from {
-        ((to - from) * SCAN_PER_PERIOD).ceil().max(1.0) as usize
-    } else {
-        0
-    };
-    (1..=n).map(move |i| {
-        if i == n {
-            to
-        } else {
-            from + (to - from) * i as f64 / n as f64
-        }
-    })
+    super::numeric::scan_grid(from, to, SCAN_PER_PERIOD)
 }
 
 fn no_convergence(name: &'static str, limit: usize) -> ParamError {

@@ -7,10 +7,6 @@
 //! φ2 with β(φ2 − φ1) = w(φ2) − w(φ1) (Eq. 25) or at a downward jump that undercuts the line.
 //! Each event contributes Eq. 31, integrated by Gauss–Legendre between breakpoints.
 
-use std::{num::NonZeroUsize, sync::OnceLock};
-
-use gauss_quad::GaussLegendre;
-
 use super::numeric::bracketed_root;
 use crate::error::{ParamError, in_range, positive};
 use crate::waveform::{Breakpoint, Waveform};
@@ -18,8 +14,6 @@ use crate::waveform::{Breakpoint, Waveform};
 /// Sign-scan resolution per period; features of w′ narrower than this may be missed, which
 /// costs O(width³) in Ψ (only near β_c of smooth waveforms).
 const SCAN_PER_PERIOD: f64 = 512.0;
-/// Gauss–Legendre order per quadrature panel.
-const QUAD_ORDER: NonZeroUsize = NonZeroUsize::new(16).unwrap();
 /// Longest quadrature panel (phase units); 16 nodes on 1/16 period integrate sin to 1e-16.
 const QUAD_PANEL: f64 = 1.0 / 16.0;
 /// Probe distance (fraction of a piece) for the left derivative at a piece's end.
@@ -110,25 +104,9 @@ fn events(waveform: &Waveform, beta: f64) -> Vec<StickEvent> {
     Walker::new(waveform, beta).run()
 }
 
-fn quadrature() -> &'static GaussLegendre {
-    static RULE: OnceLock<GaussLegendre> = OnceLock::new();
-    RULE.get_or_init(|| GaussLegendre::new(QUAD_ORDER))
-}
-
 /// Points in (from, to], about 1/SCAN_PER_PERIOD apart, ending exactly at `to`.
 fn grid(from: f64, to: f64) -> impl Iterator<Item = f64> {
-    let n = if to > from {
-        ((to - from) * SCAN_PER_PERIOD).ceil().max(1.0) as usize
-    } else {
-        0
-    };
-    (1..=n).map(move |i| {
-        if i == n {
-            to
-        } else {
-            from + (to - from) * i as f64 / n as f64
-        }
-    })
+    super::numeric::scan_grid(from, to, SCAN_PER_PERIOD)
 }
 
 /// A smooth stretch of w between consecutive breakpoints, in period `k` (global index j =
@@ -344,7 +322,7 @@ impl<'a> Walker<'a> {
             for i in 0..panels {
                 let a = lo + width * i as f64;
                 let b = if i + 1 == panels { hi } else { a + width };
-                psi += quadrature().integrate(a, b, |s| self.gap(&p, s, on, m));
+                psi += super::numeric::quadrature().integrate(a, b, |s| self.gap(&p, s, on, m));
             }
         }
         let duration = (j2 / m - on.j1 / m) as f64 + (x2 - on.x1);
