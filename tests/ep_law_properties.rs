@@ -406,3 +406,35 @@ fn modulated_normal_force_reproduces_popov() {
         }
     }
 }
+
+/// One step of any length, from any starting state, against the fine-step seed ODE: the
+/// step's pieces (exact elastic and α = 1 pieces; first-order backward-Euler sub-steps of at
+/// most a quarter band, which lengthen near the band's top) stay within 5 % of the band's
+/// width (measured 4.2 %, 0.4 % once ten widths have slipped) over stiffnesses 1e3–1e7,
+/// starting states across the band and slip paths from a hundredth to a hundred band widths
+/// (c·Δg/(μ_max − μ_ba)).
+#[test]
+fn steps_of_any_length_match_the_seed_ode_across_stiffness() {
+    let (ba, max) = (0.3, 0.35);
+    let width = max - ba;
+    let mut worst = 0.0f64;
+    for c in [1e3, 1e5, 1e7] {
+        let l = ElastoPlastic::new(c, ba, max, Curve::constant(max).unwrap()).unwrap();
+        for mu0 in [0.0, 0.29, 0.31, 0.325, 0.349, max - 1e-7, -0.2] {
+            for widths in [0.01, 0.1, 0.5, 1.0, 3.0, 10.0, 100.0] {
+                let slip = widths * width / c;
+                let dt = 1e-3;
+                let speed = slip / dt;
+                let mut s = FrictionState::with_force([mu0, 0.0]);
+                let out = l.step(&mut s, &StepInput::new([slip, 0.0], dt, 1.0));
+                let expect = reference_1d(&l, mu0, slip, speed);
+                let err = (out.mu[0] - expect).abs() / width;
+                if err > 1e-3 {
+                    eprintln!("c {c} mu0 {mu0} widths {widths}: {err:e}");
+                }
+                worst = worst.max(err);
+            }
+        }
+    }
+    assert!(worst < 5e-2, "worst error {worst:e} of the band width");
+}

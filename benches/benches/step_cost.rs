@@ -374,6 +374,34 @@ fn thread_scaling(scene: Scene, mode: Mode) -> Value {
     json!({"name": scene.name(), "variants": rows})
 }
 
+/// `STICKSLIP_BENCH_PROBE=scene/variant/steps`: only step one variant of one scene (after
+/// settling), for `perf stat` / `perf record` of a single variant.
+fn probe(spec: &str, mode: Mode) {
+    let parts: Vec<&str> = spec.split('/').collect();
+    let [scene_name, variant_name, steps] = parts[..] else {
+        eprintln!("STICKSLIP_BENCH_PROBE=scene/variant/steps, got {spec}");
+        return;
+    };
+    let steps: usize = steps.parse().unwrap_or(100);
+    let mut all = scenes(Mode::Full);
+    all.retain(|(s, _)| s.name() == scene_name);
+    let Some(&(scene, _)) = all.first() else {
+        eprintln!("no scene {scene_name}");
+        return;
+    };
+    let Some(&variant) = Variant::ALL.iter().find(|v| v.name() == variant_name) else {
+        eprintln!("no variant {variant_name}");
+        return;
+    };
+    let mut b = Bench::settled(scene, variant, settle_steps(scene, mode));
+    let t = thread_cpu();
+    for _ in 0..steps {
+        b.step();
+    }
+    let ns = (thread_cpu() - t).as_nanos() as f64 / steps as f64;
+    println!("{scene_name} {variant_name}: {ns:.0} ns/step over {steps} steps");
+}
+
 fn main() {
     let mode = mode();
     let filter = filter();
@@ -400,6 +428,10 @@ fn main() {
             serde_json::to_string_pretty(&json!({"scenes": out})).expect("json"),
         )
         .expect("write STICKSLIP_BENCH_THREADS_OUT");
+        return;
+    }
+    if let Ok(spec) = std::env::var("STICKSLIP_BENCH_PROBE") {
+        probe(&spec, mode);
         return;
     }
     run_criterion(mode, &filter);

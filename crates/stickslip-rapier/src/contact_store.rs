@@ -429,13 +429,28 @@ impl ContactStore {
     /// Drops every record not touched at `step`, cuts free slots off the end and gives back
     /// memory the store no longer needs.
     pub fn sweep(&mut self, step: u32) {
+        self.sweep_untouched(step, |_, _, _| false);
+    }
+
+    /// Like [`Self::sweep`], but a record not touched at `step` survives (and is marked) when
+    /// `held(c1, c2, user_data)` says rapier still holds its manifold: the pair's collider
+    /// arena indices and the `user_data` that manifold carries if it is this record's. One
+    /// pass over the slots; the narrow phase is asked only about untouched records (sleeping
+    /// or vanished contacts).
+    pub fn sweep_untouched(&mut self, step: u32, mut held: impl FnMut(u32, u32, u32) -> bool) {
         let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
         let free = self.free.get_mut().unwrap_or_else(|e| e.into_inner());
         let mut dropped = false;
         for (i, slot) in slots.iter_mut().enumerate() {
-            let meta = slot.meta_mut();
-            if *meta & LIVE != 0 && *meta & TOUCHED != parity(step) {
-                *meta &= !(LIVE | KEYED);
+            let meta = *slot.meta_mut();
+            if meta & LIVE == 0 || meta & TOUCHED == parity(step) {
+                continue;
+            }
+            let p = slot.packed.get_mut();
+            if held(p.c1, p.c2, encode(i as u32, generation_of(meta))) {
+                *slot.meta_mut() = (meta & !TOUCHED) | parity(step);
+            } else {
+                *slot.meta_mut() &= !(LIVE | KEYED);
                 free.push(Reverse(i as u32));
                 dropped = true;
             }

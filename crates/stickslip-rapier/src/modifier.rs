@@ -76,6 +76,27 @@ impl Clock {
     }
 }
 
+/// Whether rapier holds a manifold carrying `user_data` between the colliders at arena
+/// indices `c1` and `c2` (a sleeping contact keeps its state; a vanished one does not).
+fn holds_manifold(
+    narrow_phase: &NarrowPhase,
+    colliders: &ColliderSet,
+    c1: u32,
+    c2: u32,
+    user_data: u32,
+) -> bool {
+    let (Some((_, h1)), Some((_, h2))) =
+        (colliders.get_unknown_gen(c1), colliders.get_unknown_gen(c2))
+    else {
+        return false;
+    };
+    narrow_phase.contact_pair(h1, h2).is_some_and(|pair| {
+        pair.solver_manifolds()
+            .iter()
+            .any(|m| m.data.user_data == user_data)
+    })
+}
+
 /// What [`StickSlip::end_step`] reads back from the solver after each step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 pub enum ReadBack {
@@ -312,11 +333,19 @@ impl<H: PhysicsHooks> StickSlip<H> {
         let dt = self.clock.dt;
         self.clock.time += dt;
         let read_back = self.read_back;
-        if read_back == ReadBack::Off && !self.clock.step.is_multiple_of(SWEEP_INTERVAL) {
+        let mark = self.clock.mark();
+        if read_back == ReadBack::Off {
+            if self.clock.step.is_multiple_of(SWEEP_INTERVAL) {
+                // Nothing to read back: only the records the hook did not see since the last
+                // sweep (sleeping or vanished contacts) are looked up in the narrow phase.
+                self.store.sweep_untouched(mark, |c1, c2, user_data| {
+                    holds_manifold(narrow_phase, colliders, c1, c2, user_data)
+                });
+                self.clock.sweeps = mark;
+            }
             return;
         }
         self.reports.clear();
-        let mark = self.clock.mark();
         let mut totals = WorldTotals {
             dissipated_energy: self.totals.dissipated_energy,
             ..WorldTotals::default()
@@ -330,7 +359,7 @@ impl<H: PhysicsHooks> StickSlip<H> {
                 else {
                     continue;
                 };
-                if read_back == ReadBack::Off || m.data.solver_contacts.is_empty() || !(dt > 0.0) {
+                if m.data.solver_contacts.is_empty() || !(dt > 0.0) {
                     continue;
                 }
                 let report = crate::hook::report(
@@ -359,10 +388,8 @@ impl<H: PhysicsHooks> StickSlip<H> {
         // Everything rapier no longer holds a manifold for goes now.
         self.store.sweep(mark);
         self.clock.sweeps = mark;
-        if read_back != ReadBack::Off {
-            totals.dissipated_energy += totals.dissipated_power * dt;
-            self.totals = totals;
-        }
+        totals.dissipated_energy += totals.dissipated_power * dt;
+        self.totals = totals;
     }
 
     /// One step of `world` with this modifier (and no event handler of yours: pass one with

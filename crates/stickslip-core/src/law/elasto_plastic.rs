@@ -62,6 +62,58 @@ use serde::{Deserialize, Serialize};
 /// backward-Euler sub-step takes whatever path is left (it is stable for any length).
 const MAX_PIECES: usize = 48;
 
+/// 1 − α below which the switch counts as fully sliding (α = 1) in a step's pieces: the
+/// state then errs by at most ALPHA_FLAT · μ_ve (a millionth of the sliding level).
+const ALPHA_FLAT: f64 = 1e-6;
+
+/// Distance below the band's top U within which 1 − α(|μ|) ≤ [`ALPHA_FLAT`]: near U,
+/// 1 − α = sin²(π (U − |μ|) / (2 (U − L))) ≤ (π (U − |μ|) / (2 (U − L)))².
+fn flat_top(lo: f64, hi: f64) -> f64 {
+    2.0 * (hi - lo).max(0.0) / std::f64::consts::PI * ALPHA_FLAT.sqrt()
+}
+
+/// The root r ∈ [lo, hi] of the increasing g(r) = r (1 + k α(r; lo, hi)) − q, given
+/// g(lo) ≤ 0 ≤ g(hi): Newton's method on the sine blend, kept inside the shrinking bracket
+/// (bisection where a step leaves it). One sine and cosine per iteration and quadratic
+/// convergence from a close start: this runs in every sub-step of a contact inside the band,
+/// where Brent's method (`roots`) needed about 13 sines.
+fn band_radius(q: f64, k: f64, lo: f64, hi: f64, start: f64) -> f64 {
+    let width = hi - lo;
+    if !(width > 0.0) {
+        return lo;
+    }
+    let (mid, tol) = (0.5 * (lo + hi), 1e-13 * hi);
+    let (mut a, mut b) = (lo, hi);
+    let mut r = if start.is_finite() {
+        start.clamp(lo, hi)
+    } else {
+        mid
+    };
+    for _ in 0..100 {
+        let (sin, cos) = (std::f64::consts::PI * (r - mid) / width).sin_cos();
+        let alpha = 0.5 * sin + 0.5;
+        let g = r * (1.0 + k * alpha) - q;
+        if g == 0.0 {
+            return r;
+        }
+        if g < 0.0 {
+            a = r;
+        } else {
+            b = r;
+        }
+        let slope = 1.0 + k * (alpha + r * 0.5 * std::f64::consts::PI * cos / width);
+        let mut next = r - g / slope;
+        if !(next > a && next < b) {
+            next = 0.5 * (a + b);
+        }
+        if (next - r).abs() <= tol || b - a <= tol {
+            return next.clamp(lo, hi);
+        }
+        r = next;
+    }
+    r
+}
+
 /// Which form of the switch the law uses (module docs).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
@@ -390,7 +442,11 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
                 dissipated: 0.0,
             };
         }
-        if self.stays_sliding(mu, e, m, hi) {
+        // Within `flat_top` of U, α differs from 1 by less than ALPHA_FLAT (the sine blend is
+        // flat at its top): there the exact α = 1 solution is the law to that accuracy. A
+        // steady slide approaches U = μ_ve from inside the band and would otherwise never
+        // leave the sub-stepped branch.
+        if self.stays_sliding(mu, e, m, hi - flat_top(lo, hi)) {
             // α = 1 along the whole rest (the band only sinks as σ grows): the linear ODE's
             // exact solution μ(s) = m e + d exp(−c s/m), and its dissipation ∫|μ|²/m ds.
             let kappa = c / m;
@@ -406,7 +462,24 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
                 dissipated: (integral / m).max(0.0),
             };
         }
-        self.backward_euler(mu, sigma, e, rest.min(h_max), c, m, w_sigma)
+        // A sub-step moves the state by at most a quarter of the band and spans at most a
+        // quarter of the law's local relaxation length 1/J, J = (c/m)(α + |μ| α'): in the
+        // band's steep middle that is h_max; near its top (α' → 0, J → c/m) the state moves
+        // slowly and the sub-steps lengthen, so a slide settling onto U = μ_ve takes a few
+        // dozen sub-steps, not thousands of h_max.
+        let width = hi - lo;
+        let h = if width > 0.0 && mag < hi {
+            let x = std::f64::consts::PI * (mag - 0.5 * (lo + hi)) / width;
+            let (sin, cos) = x.sin_cos();
+            let a = 0.5 * sin + 0.5;
+            let slope = 0.5 * std::f64::consts::PI * cos / width;
+            let rate = c * norm(sub(e, scale(mu, a / m)));
+            let stiffness = c / m * (a + mag * slope);
+            (0.25 * width / rate).min(0.25 / stiffness).max(h_max)
+        } else {
+            h_max
+        };
+        self.backward_euler(mu, sigma, e, rest.min(h), c, m, w_sigma)
     }
 
     /// Progress σ after `used` metres of slip past break-away.
@@ -449,15 +522,9 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
             let r = if r_slide >= hi1 {
                 r_slide
             } else {
-                let g = |r: f64| r * (1.0 + hc * alpha(r, lo1, hi1) / m) - qn;
-                let mut conv = roots::SimpleConvergency {
-                    eps: 1e-13 * hi1.max(1e-300),
-                    max_iter: 100,
-                };
-                // g(L) ≤ 0 ≤ g(U) here, so the bracket always holds.
-                roots::find_root_brent(lo1, hi1, g, &mut conv)
-                    .unwrap_or(lo1)
-                    .clamp(lo1, hi1)
+                // Start from the radius α at the sub-step's start gives: the root moves little.
+                let start = qn / (1.0 + hc * alpha(norm(mu), lo1, hi1) / m);
+                band_radius(qn, hc / m, lo1, hi1, start)
             };
             scale(q, r / qn)
         };
@@ -573,6 +640,36 @@ mod tests {
 
     fn law() -> ElastoPlastic {
         ElastoPlastic::new(1e4, 0.3, 0.4, Curve::constant(0.4).unwrap()).unwrap()
+    }
+
+    #[test]
+    fn band_radius_matches_brent_on_the_sine_blend() {
+        // The safeguarded Newton root against Brent's method (`roots`) on g(r) = r (1 + k α) − q
+        // over bands, stiffnesses h·c/m from tiny to huge and every q in the bracket.
+        let mut worst = 0.0f64;
+        for (lo, hi) in [(0.3, 0.4), (0.5, 0.55), (0.2, 0.9), (1.0, 1.0 + 1e-9)] {
+            for k in [1e-9, 1e-3, 0.1, 1.0, 10.0, 1e3, 1e8] {
+                let g_lo = lo;
+                let g_hi = hi * (1.0 + k);
+                for i in 0..=40 {
+                    let q = g_lo + (g_hi - g_lo) * i as f64 / 40.0 * (1.0 - 1e-12);
+                    let g = |r: f64| r * (1.0 + k * alpha(r, lo, hi)) - q;
+                    let mut conv = roots::SimpleConvergency {
+                        eps: 1e-15,
+                        max_iter: 500,
+                    };
+                    let brent = roots::find_root_brent(lo, hi, g, &mut conv)
+                        .unwrap_or_else(|e| panic!("{e:?} lo {lo} hi {hi} k {k} q {q}"));
+                    for start in [lo, hi, 0.5 * (lo + hi), f64::NAN] {
+                        let r = band_radius(q, k, lo, hi, start);
+                        assert!((lo..=hi).contains(&r), "{r} outside [{lo}, {hi}]");
+                        worst = worst.max((r - brent).abs() / hi);
+                    }
+                }
+            }
+        }
+        assert!(worst < 1e-11, "worst relative difference {worst:e}");
+        assert_eq!(band_radius(0.5, 1.0, 0.4, 0.4, 0.4), 0.4);
     }
 
     #[test]
