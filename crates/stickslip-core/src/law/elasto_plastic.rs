@@ -44,9 +44,12 @@
 //! The continuous law stores E = |s⃗|²/(2 k_t) and dissipates F_n α |ġ| |μ|²/μ_ve ≥ 0, whatever
 //! α and σ are. A step integrates along its straight slip path (sliding level μ_ve of the
 //! step's speed): elastic pieces (α = 0) exactly, with the band crossing in closed form; pieces
-//! where α = 1 all along exactly (exponential), with their dissipation in closed form; the rest
-//! with backward-Euler sub-steps (one monotone scalar equation each, Brent's method from
-//! `roots`). Backward Euler is L-stable and keeps |μ| ≤ max(|μ₀|, μ_max, μ_ve) for any c and
+//! where α = 1 all along (to 1 − α ≤ 1e-6) exactly (exponential), with their dissipation in
+//! closed form; the rest with backward-Euler sub-steps (one monotone scalar equation each,
+//! Newton's method kept in its bracket), each moving the state by at most a quarter band and a
+//! quarter of the local relaxation length, so they lengthen where the state settles near the
+//! band's top (one step of any length stays within 5 % of the band's width of the seed's ODE,
+//! tests/ep_law_properties.rs). Backward Euler is L-stable and keeps |μ| ≤ max(|μ₀|, μ_max, μ_ve) for any c and
 //! step; its sub-step dissipates F_n [μ⃗₁·Δg⃗ − (|μ₁|² − |μ₀|²)/(2c)] =
 //! F_n [|Δμ⃗|²/(2c) + h α₁ |μ₁|²/μ_ve] ≥ 0, so every step dissipates ≥ 0 by construction and the
 //! reported dissipation is the work the step's forces do minus the change of stored energy.
