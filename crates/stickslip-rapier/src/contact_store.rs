@@ -361,9 +361,9 @@ impl ContactStore {
             Some(Reverse(i)) => i,
             None => {
                 if slots.len() == slots.capacity() {
-                    // Grow by 1/16: the slack stays small (memory per contact), the copies
+                    // Grow by 1/32: the slack stays small (memory per contact), the copies
                     // amortized.
-                    let more = (slots.len() / 16).max(64);
+                    let more = (slots.len() / 32).max(64);
                     slots.reserve_exact(more);
                 }
                 let generation = self.next_generation.fetch_add(1, Ordering::Relaxed);
@@ -503,8 +503,8 @@ impl ContactStore {
         let by_key = self.by_key.get_mut().unwrap_or_else(|e| e.into_inner());
         let inner = self.inner_data.get_mut().unwrap_or_else(|e| e.into_inner());
         let n = slots.len();
-        if slots.capacity() > n + n / 8 + 64 {
-            slots.shrink_to(n + n / 16);
+        if slots.capacity() > n + n / 16 + 64 {
+            slots.shrink_to(n + n / 32);
         }
         if free.capacity() > 2 * free.len() + 64 {
             free.shrink_to(free.len());

@@ -46,8 +46,8 @@
 //! step's speed): elastic pieces (α = 0) exactly, with the band crossing in closed form; pieces
 //! where α = 1 all along (to 1 − α ≤ 1e-6) exactly (exponential), with their dissipation in
 //! closed form; the rest with backward-Euler sub-steps (one monotone scalar equation each,
-//! Newton's method kept in its bracket), each moving the state by at most a quarter band and a
-//! quarter of the local relaxation length, so they lengthen where the state settles near the
+//! Newton's method kept in its bracket), each moving the state by at most a quarter band and at
+//! most half the local relaxation length, so they lengthen where the state settles near the
 //! band's top (one step of any length stays within 5 % of the band's width of the seed's ODE,
 //! tests/ep_law_properties.rs). Backward Euler is L-stable and keeps |μ| ≤ max(|μ₀|, μ_max, μ_ve) for any c and
 //! step; its sub-step dissipates F_n [μ⃗₁·Δg⃗ − (|μ₁|² − |μ₀|²)/(2c)] =
@@ -77,24 +77,44 @@ fn flat_top(lo: f64, hi: f64) -> f64 {
 
 /// The root r ∈ [lo, hi] of the increasing g(r) = r (1 + k α(r; lo, hi)) − q, given
 /// g(lo) ≤ 0 ≤ g(hi): Newton's method on the sine blend, kept inside the shrinking bracket
-/// (bisection where a step leaves it). One sine and cosine per iteration and quadratic
-/// convergence from a close start: this runs in every sub-step of a contact inside the band,
-/// where Brent's method (`roots`) needed about 13 sines.
-fn band_radius(q: f64, k: f64, lo: f64, hi: f64, start: f64) -> f64 {
+/// (bisection where a step leaves it). It starts from the root with α linearized at `near`
+/// (the sub-step's starting |μ|, a quadratic; `known` = (α, α') there if the caller has
+/// them), so about three iterations of one sine and cosine each reach 1e-13: this runs in every sub-step of a contact inside the band, where
+/// Brent's method (`roots`) needed about 13 sines.
+fn band_radius(q: f64, k: f64, lo: f64, hi: f64, near: f64, known: Option<(f64, f64)>) -> f64 {
     let width = hi - lo;
     if !(width > 0.0) {
         return lo;
     }
     let (mid, tol) = (0.5 * (lo + hi), 1e-13 * hi);
     let (mut a, mut b) = (lo, hi);
-    let mut r = if start.is_finite() {
-        start.clamp(lo, hi)
+    let blend = |r: f64| {
+        let (sin, cos) = (std::f64::consts::PI * (r - mid) / width).sin_cos();
+        (0.5 * sin + 0.5, 0.5 * std::f64::consts::PI * cos / width)
+    };
+    // α ≈ α₀ + α₀' (r − r₀): k α₀' r² + (1 + k (α₀ − α₀' r₀)) r − q = 0, the positive root in
+    // the form without cancellation.
+    let r0 = if near.is_finite() {
+        near.clamp(lo, hi)
     } else {
         mid
     };
+    // (α, α') at `near`, when the caller has them for this band.
+    let (alpha0, slope0) = known.filter(|_| r0 == near).unwrap_or_else(|| blend(r0));
+    let (qa, qb) = (k * slope0, 1.0 + k * (alpha0 - slope0 * r0));
+    let disc = (qb * qb + 4.0 * qa * q).max(0.0).sqrt();
+    let start = if qa > 0.0 && qb < 0.0 {
+        (disc - qb) / (2.0 * qa)
+    } else {
+        2.0 * q / (qb + disc)
+    };
+    let mut r = if start.is_finite() {
+        start.clamp(lo, hi)
+    } else {
+        r0
+    };
     for _ in 0..100 {
-        let (sin, cos) = (std::f64::consts::PI * (r - mid) / width).sin_cos();
-        let alpha = 0.5 * sin + 0.5;
+        let (alpha, slope) = blend(r);
         let g = r * (1.0 + k * alpha) - q;
         if g == 0.0 {
             return r;
@@ -104,8 +124,7 @@ fn band_radius(q: f64, k: f64, lo: f64, hi: f64, start: f64) -> f64 {
         } else {
             b = r;
         }
-        let slope = 1.0 + k * (alpha + r * 0.5 * std::f64::consts::PI * cos / width);
-        let mut next = r - g / slope;
+        let mut next = r - g / (1.0 + k * (alpha + r * slope));
         if !(next > a && next < b) {
             next = 0.5 * (a + b);
         }
@@ -398,7 +417,7 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
         }
         if rest > 0.0 {
             // Whatever is left in one backward-Euler sub-step (stable for any length).
-            let p = self.backward_euler(mu, sigma, e, rest, c, m, w_sigma);
+            let p = self.backward_euler(mu, sigma, e, rest, c, m, w_sigma, None);
             mu = p.mu;
             sigma = p.sigma;
             dissipated += p.dissipated;
@@ -465,24 +484,25 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
                 dissipated: (integral / m).max(0.0),
             };
         }
-        // A sub-step moves the state by at most a quarter of the band and spans at most a
-        // quarter of the law's local relaxation length 1/J, J = (c/m)(α + |μ| α'): in the
-        // band's steep middle that is h_max; near its top (α' → 0, J → c/m) the state moves
-        // slowly and the sub-steps lengthen, so a slide settling onto U = μ_ve takes a few
-        // dozen sub-steps, not thousands of h_max.
+        // A sub-step moves the state by at most a quarter of the band and spans at most half
+        // the law's local relaxation length 1/J, J = (c/m)(α + |μ| α'): in the band's steep
+        // middle that is about h_max; near its top (α' → 0, J → c/m) the state moves slowly
+        // and the sub-steps lengthen, so a slide settling onto U = μ_ve takes a dozen
+        // sub-steps, not hundreds of h_max.
         let width = hi - lo;
-        let h = if width > 0.0 && mag < hi {
+        let (h, known) = if width > 0.0 && mag < hi {
             let x = std::f64::consts::PI * (mag - 0.5 * (lo + hi)) / width;
             let (sin, cos) = x.sin_cos();
             let a = 0.5 * sin + 0.5;
             let slope = 0.5 * std::f64::consts::PI * cos / width;
             let rate = c * norm(sub(e, scale(mu, a / m)));
             let stiffness = c / m * (a + mag * slope);
-            (0.25 * width / rate).min(0.25 / stiffness).max(h_max)
+            let h = (0.25 * width / rate).min(0.5 / stiffness).max(h_max);
+            (h, Some(((lo, hi), (a, slope))))
         } else {
-            h_max
+            (h_max, None)
         };
-        self.backward_euler(mu, sigma, e, rest.min(h), c, m, w_sigma)
+        self.backward_euler(mu, sigma, e, rest.min(h), c, m, w_sigma, known)
     }
 
     /// Progress σ after `used` metres of slip past break-away.
@@ -505,6 +525,7 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
         c: f64,
         m: f64,
         w_sigma: f64,
+        known: Option<((f64, f64), (f64, f64))>,
     ) -> Piece {
         // Backward Euler: μ₁ = μ₀ + h c e − h c α₁ μ₁/m with α₁ on the band at the sub-step's
         // end; with q = μ₀ + h c e, μ₁ = q r/|q| where r (1 + h c α(r)/m) = |q|.
@@ -525,9 +546,11 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
             let r = if r_slide >= hi1 {
                 r_slide
             } else {
-                // Start from the radius α at the sub-step's start gives: the root moves little.
-                let start = qn / (1.0 + hc * alpha(norm(mu), lo1, hi1) / m);
-                band_radius(qn, hc / m, lo1, hi1, start)
+                // The blend at |μ₀| the caller computed holds if the band did not move.
+                let known = known
+                    .filter(|(band, _)| *band == (lo1, hi1))
+                    .map(|(_, b)| b);
+                band_radius(qn, hc / m, lo1, hi1, norm(mu), known)
             };
             scale(q, r / qn)
         };
@@ -664,15 +687,23 @@ mod tests {
                     let brent = roots::find_root_brent(lo, hi, g, &mut conv)
                         .unwrap_or_else(|e| panic!("{e:?} lo {lo} hi {hi} k {k} q {q}"));
                     for start in [lo, hi, 0.5 * (lo + hi), f64::NAN] {
-                        let r = band_radius(q, k, lo, hi, start);
+                        let r = band_radius(q, k, lo, hi, start, None);
                         assert!((lo..=hi).contains(&r), "{r} outside [{lo}, {hi}]");
+                        worst = worst.max((r - brent).abs() / hi);
+                        // Given (α, α') at the start, as the sub-step passes them.
+                        let x = std::f64::consts::PI * (start - 0.5 * (lo + hi)) / (hi - lo);
+                        let known = (
+                            alpha(start, lo, hi),
+                            0.5 * std::f64::consts::PI * x.cos() / (hi - lo),
+                        );
+                        let r = band_radius(q, k, lo, hi, start, Some(known));
                         worst = worst.max((r - brent).abs() / hi);
                     }
                 }
             }
         }
         assert!(worst < 1e-11, "worst relative difference {worst:e}");
-        assert_eq!(band_radius(0.5, 1.0, 0.4, 0.4, 0.4), 0.4);
+        assert_eq!(band_radius(0.5, 1.0, 0.4, 0.4, 0.4, None), 0.4);
     }
 
     #[test]
