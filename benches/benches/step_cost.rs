@@ -16,7 +16,8 @@
 //! Full run: `STICKSLIP_BENCH_OUT=cost.json cargo bench -p stickslip-benches --bench step_cost` (the report script
 //! does this). Smoke run (each bench once, small settle, tiny extra pass):
 //! `cargo test -p stickslip-benches --benches` or `cargo bench -p stickslip-benches --bench
-//! step_cost -- --test`.
+//! step_cost -- --test`. One variant alone, for a profiler:
+//! `STICKSLIP_BENCH_PROBE=pile_10000/ep/500 <bench binary> --bench` (see `probe`).
 
 mod common;
 
@@ -375,7 +376,8 @@ fn thread_scaling(scene: Scene, mode: Mode) -> Value {
 }
 
 /// `STICKSLIP_BENCH_PROBE=scene/variant/steps`: only step one variant of one scene (after
-/// settling), for `perf stat` / `perf record` of a single variant.
+/// settling), for `perf stat` / `perf record` of a single variant; with
+/// `STICKSLIP_BENCH_RECYCLE=0` rapier's contact recycling is off.
 fn probe(spec: &str, mode: Mode) {
     let parts: Vec<&str> = spec.split('/').collect();
     let [scene_name, variant_name, steps] = parts[..] else {
@@ -394,6 +396,13 @@ fn probe(spec: &str, mode: Mode) {
         return;
     };
     let mut b = Bench::settled(scene, variant, settle_steps(scene, mode));
+    // STICKSLIP_BENCH_RECYCLE=0: rapier's contact recycling off (what a hooked pair never
+    // gets: rapier skips it for every pair with active hooks).
+    if std::env::var("STICKSLIP_BENCH_RECYCLE").is_ok_and(|v| v == "0") {
+        b.world
+            .integration_parameters
+            .normalized_contact_recycle_distance = 0.0;
+    }
     let t = thread_cpu();
     for _ in 0..steps {
         b.step();
