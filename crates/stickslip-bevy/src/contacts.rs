@@ -1,10 +1,8 @@
 //! Contact read-back: every stickslip contact of the last step mapped to entities, world
 //! totals, and a message whenever a contact's regime changes.
 
-use crate::convert::to_bevy;
 use crate::world::StickSlipWorld;
 use bevy::prelude::*;
-use rapier3d::prelude as rp;
 use std::collections::HashMap;
 use stickslip_core::law::Regime;
 use stickslip_rapier::{ContactReport, WorldTotals};
@@ -103,7 +101,7 @@ pub(crate) fn read_back(
         out.contacts.push(Contact {
             collider1: e1,
             collider2: e2,
-            point: world_point(&w, r).unwrap_or(Vec3::from_array(r.point)),
+            point: Vec3::from_array(r.point),
             normal: Vec3::from_array(r.normal),
             report: *r,
         });
@@ -124,29 +122,4 @@ pub(crate) fn read_back(
     out.last = now;
     out.totals = w.friction.totals();
     out.time = w.friction.time();
-}
-
-/// The world-space centroid of the report's manifold, found by its normal among the pair's
-/// solver manifolds. (After a step rapier keeps a dynamic body's solver anchors in that
-/// body's local frame, so the anchors cannot be averaged as world points; the manifold's
-/// local points and the colliders' poses can.)
-fn world_point(w: &StickSlipWorld, r: &ContactReport) -> Option<Vec3> {
-    let pair = w.physics.contact_pair(r.collider1, r.collider2)?;
-    let m = pair
-        .solver_manifolds()
-        .iter()
-        .find(|m| !m.data.solver_contacts.is_empty() && m.data.normal.to_array() == r.normal)?;
-    let pose = |h: rp::ColliderHandle, sub: Option<&rp::Pose>| {
-        let at = *w.physics.colliders.get(h)?.position();
-        Some(sub.map_or(at, |s| at * *s))
-    };
-    let pos1 = pose(pair.collider1, m.subshape_pos1())?;
-    let pos2 = pose(pair.collider2, m.subshape_pos2())?;
-    let mut sum = rp::Vector::ZERO;
-    for c in &m.data.solver_contacts {
-        let id = (c.contact_id[0] & !rp::NEW_CONTACT_BIT) as usize;
-        let p = m.points.get(id)?;
-        sum += (pos1 * p.local_p1 + pos2 * p.local_p2) * 0.5;
-    }
-    Some(to_bevy(sum / m.data.solver_contacts.len() as f32))
 }

@@ -673,21 +673,48 @@ fn averaged_in_plane(
 }
 
 /// The read-back of one manifold after the step.
+/// The world-space centroid of a manifold's solver contacts after the step, and their mean
+/// target velocity. After the hook, rapier re-expresses a dynamic body's solver anchors in
+/// that body's frame, so the anchors are not world points any more; the manifold's local
+/// points and the colliders' poses are.
+fn world_centroid(
+    m: &ContactManifold,
+    colliders: &ColliderSet,
+    (c1, c2): (ColliderHandle, ColliderHandle),
+) -> Option<(Vector, Vector)> {
+    let pose = |h: ColliderHandle, sub: Option<&Pose>| {
+        let at = *colliders.get(h)?.position();
+        Some(sub.map_or(at, |s| at * *s))
+    };
+    let (pos1, pos2) = (pose(c1, m.subshape_pos1())?, pose(c2, m.subshape_pos2())?);
+    let contacts = &m.data.solver_contacts;
+    let (mut p, mut surface) = (Vector::ZERO, Vector::ZERO);
+    for c in contacts {
+        let point = m.points.get(c.contact_indices()[0] as usize)?;
+        p += (pos1 * point.local_p1 + pos2 * point.local_p2) * 0.5;
+        surface += c.tangent_velocity;
+    }
+    let k = contacts.len().max(1) as f32;
+    Some((p / k, surface / k))
+}
+
 pub(crate) fn report(
     m: &ContactManifold,
     rec: &ContactRecord,
     (c1, c2): (ColliderHandle, ColliderHandle),
     bodies: &RigidBodySet,
-    _colliders: &ColliderSet,
+    colliders: &ColliderSet,
     dt: f64,
 ) -> ContactReport {
     if rec.regime == REGIME_RESET {
         return reset_report(rec, c1, c2);
     }
+    let Some((p, surface)) = world_centroid(m, colliders, (c1, c2)) else {
+        return reset_report(rec, c1, c2);
+    };
     let meas = measure(m, dt);
     let n = m.data.normal;
     let basis = TangentBasis::new(n);
-    let (p, surface) = centroid(&m.data.solver_contacts);
     let slip = basis.tangential(
         point_velocity(bodies, m.data.rigid_body2, p)
             - point_velocity(bodies, m.data.rigid_body1, p)

@@ -13,7 +13,8 @@ pub struct ContactReport {
     /// Second collider of the pair.
     #[serde(skip)]
     pub collider2: ColliderHandle,
-    /// Contact point (manifold centroid, world).
+    /// Contact point (m, world): the centroid of the manifold's solver contacts after the
+    /// step, midway between the two surfaces.
     pub point: [f32; 3],
     /// Contact normal (world, from collider 1 towards collider 2).
     pub normal: [f32; 3],
