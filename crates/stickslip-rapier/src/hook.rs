@@ -34,6 +34,7 @@ use crate::report::ContactReport;
 use crate::tangent::TangentBasis;
 use crate::vibration::{VibrationDirection, VibrationMode, VibrationSource};
 use rapier3d::prelude::*;
+use std::sync::atomic::Ordering;
 use stickslip_core::law::{FrictionLaw, FrictionState, Law, Regime, StepInput};
 use stickslip_core::sliding_curve::SlidingCurve;
 use stickslip_core::vec2::{self, Vec2};
@@ -225,6 +226,9 @@ impl<H: PhysicsHooks> StickSlip<H> {
         };
         let basis = TangentBasis::new(*m.normal);
         let (p, surface) = centroid(m.solver_contacts);
+        if surface != Vector::ZERO && !self.moving_surfaces.load(Ordering::Relaxed) {
+            self.moving_surfaces.store(true, Ordering::Relaxed);
+        }
         let slip_w = basis
             .tangential(point_velocity(bodies, rb2, p) - point_velocity(bodies, rb1, p) - surface);
         let slip: Vec2 = basis.project(slip_w);
@@ -672,7 +676,6 @@ fn averaged_in_plane(
     (mu.abs(), target)
 }
 
-/// The read-back of one manifold after the step.
 /// The world-space centroid of a manifold's solver contacts after the step, and their mean
 /// target velocity. After the hook, rapier re-expresses a dynamic body's solver anchors in
 /// that body's frame, so the anchors are not world points any more; the manifold's local
@@ -698,6 +701,8 @@ fn world_centroid(
     Some((p / k, surface / k))
 }
 
+/// The read-back of one manifold after the step (`moving_surfaces`: whether the wrapped hook
+/// gives surfaces velocities, see `StickSlip::moving_surfaces`).
 pub(crate) fn report(
     m: &ContactManifold,
     rec: &ContactRecord,
@@ -705,12 +710,21 @@ pub(crate) fn report(
     bodies: &RigidBodySet,
     colliders: &ColliderSet,
     dt: f64,
+    moving_surfaces: bool,
 ) -> ContactReport {
     if rec.regime == REGIME_RESET {
         return reset_report(rec, c1, c2);
     }
-    let Some((p, surface)) = world_centroid(m, colliders, (c1, c2)) else {
+    let Some((p, targets)) = world_centroid(m, colliders, (c1, c2)) else {
         return reset_report(rec, c1, c2);
+    };
+    // The target velocities hold stickslip's own (anchor correction, Regul's creep,
+    // vibration drive) besides a wrapped hook's surface velocity; without such a hook they
+    // are not a surface's motion at all.
+    let surface = if moving_surfaces {
+        targets
+    } else {
+        Vector::ZERO
     };
     let meas = measure(m, dt);
     let n = m.data.normal;

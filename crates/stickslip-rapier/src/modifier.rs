@@ -7,6 +7,7 @@ use crate::report::{ContactReport, WorldTotals};
 use crate::vibration::VibrationSource;
 use rapier3d::prelude::*;
 use serde::{Deserialize, Serialize};
+use std::sync::atomic::{AtomicBool, Ordering};
 use stickslip_core::ParamError;
 use stickslip_core::error::{in_range, positive};
 
@@ -135,6 +136,10 @@ pub struct StickSlip<H = ()> {
     pub(crate) store: ContactStore,
     pub(crate) clock: Clock,
     pub(crate) inner: H,
+    /// Whether the wrapped hook gave any contact a surface velocity (a conveyor) this step;
+    /// if not, the reports' slip subtracts none (the solver contacts' target velocities after
+    /// the step also hold stickslip's own). Reset by `begin_step`: a function of the step.
+    pub(crate) moving_surfaces: AtomicBool,
     /// What [`Self::end_step`] reads back (nothing by default).
     pub(crate) read_back: ReadBack,
     pub(crate) reports: Vec<ContactReport>,
@@ -160,6 +165,7 @@ impl<H: PhysicsHooks> StickSlip<H> {
             store: ContactStore::default(),
             clock: Clock::default(),
             inner,
+            moving_surfaces: AtomicBool::new(false),
             read_back: ReadBack::Off,
             reports: Vec::new(),
             totals: WorldTotals::default(),
@@ -318,6 +324,7 @@ impl<H: PhysicsHooks> StickSlip<H> {
         let dt = params.dt as f64;
         self.clock.dt = if valid_dt(dt) { dt } else { 0.0 };
         self.clock.step = self.clock.step.wrapping_add(1);
+        *self.moving_surfaces.get_mut() = false;
     }
 
     /// Call after each step: sums the totals and builds the reports (as [`Self::read_back`]
@@ -369,6 +376,7 @@ impl<H: PhysicsHooks> StickSlip<H> {
                     bodies,
                     colliders,
                     dt,
+                    self.moving_surfaces.load(Ordering::Relaxed),
                 );
                 totals.contacts += 1;
                 totals.reset += usize::from(report.reset);

@@ -754,6 +754,8 @@ impl<H> StickSlip<H> {
                 sweeps: c.sweeps,
             },
             inner,
+            // Reset by every begin_step, set by the hook during the step.
+            moving_surfaces: std::sync::atomic::AtomicBool::new(false),
             read_back: s.read_back,
             reports,
             totals,
