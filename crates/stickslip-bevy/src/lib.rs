@@ -15,7 +15,7 @@
 //!     and the read-back: the [`ContactReports`] resource and [`RegimeChanged`] messages.
 //!   - with feature `debug`, `debug::StickSlipDebugPlugin`: contact gizmos coloured by
 //!     regime.
-//! - with feature `scenario`, [`scenario`]: the TOML scenarios of `stickslip run` spawned as
+//! - with feature `scenario`, `scenario`: the TOML scenarios of `stickslip run` spawned as
 //!   entities, their drivers acting on them (`cargo run -p stickslip-bevy --features
 //!   window,scenario --example view -- scenarios/incline.toml`).
 //! - Physics runs in `FixedPostUpdate` by default, in the chained sets [`StickSlipSystems`]

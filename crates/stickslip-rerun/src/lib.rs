@@ -316,9 +316,10 @@ impl RerunLogger {
     }
 
     /// Logs the state after `step` steps (the time is the modifier's simulated time) if `step`
-    /// is a multiple of [`LogOptions::every`]; returns whether it logged. Contacts are logged
-    /// from the modifier's per-contact reports: turn them on with
-    /// [`StickSlip::set_contact_reports`] (the world totals are logged either way).
+    /// is a multiple of [`LogOptions::every`]; returns whether it logged. Contacts and world
+    /// totals are logged from what the modifier reads back: turn that on with
+    /// [`StickSlip::set_read_back`] (`ReadBack::Contacts`; `ReadBack::Totals` for the totals
+    /// alone, which stay zero with the default `ReadBack::Off`).
     pub fn log_step<H: PhysicsHooks>(
         &mut self,
         step: u64,

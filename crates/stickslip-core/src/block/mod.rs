@@ -18,8 +18,8 @@ mod simulate;
 
 pub use profile::ForceProfile;
 pub use simulate::{
-    BeltSpring, BlockRun, Integrator, PhaseSummary, RunStats, STICK_SPEED, SimError, Tolerances,
-    simulate,
+    BeltSpring, BlockRun, Integrator, MAX_DURATION, PhaseSummary, RunStats, STICK_SPEED, SimError,
+    Tolerances, simulate,
 };
 
 use crate::error::{ParamError, in_range};

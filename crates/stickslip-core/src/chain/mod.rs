@@ -17,11 +17,11 @@
 //! its last component is the friction work W = ∫ Σ F_n μ_i ẋ_i dt (J), the quantity of the
 //! seed's Fig. 2C (chain friction power).
 //!
-//! Only the smooth laws fit an ODE integrator: [`ChainLaw`] is EP or Regul. The exact switched
+//! Only the smooth laws fit an ODE integrator: `ChainLaw` is EP or Regul. The exact switched
 //! model with 250 contacts is a complementarity problem, not an ODE, so a reference solution
-//! is a tightly integrated smooth model (see [`ChainRun::error_against`]).
+//! is a tightly integrated smooth model (see `ChainRun::error_against`).
 //!
-//! [`ChainParams::timing_drive`] gives the parameters used in the benchmarks: 250 strand
+//! `ChainParams::timing_drive` gives the parameters used in the benchmarks: 250 strand
 //! segments pressed on a guide, driven at 500 Hz.
 //!
 //! ```
