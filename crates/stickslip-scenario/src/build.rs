@@ -12,7 +12,10 @@ use rapier3d::prelude::*;
 use std::collections::{BTreeMap, HashMap, HashSet};
 use stickslip_core::block::ForceProfile;
 use stickslip_core::law::{Coulomb, Law};
-use stickslip_rapier::{FrictionMaterial, StickSlip, StickSlipConfig, VibrationSource};
+use stickslip_core::waveform::Waveform;
+use stickslip_rapier::{
+    FrictionMaterial, StickSlip, StickSlipConfig, VibrationComponent, VibrationSource,
+};
 
 /// A built scenario: everything a [`crate::Runner`] steps and a logger reads.
 pub struct Scene {
@@ -457,15 +460,45 @@ impl Scenario {
             field: field.clone(),
             source,
         };
-        let mut s = VibrationSource::new(
-            v.direction,
-            v.amplitude,
-            v.frequency,
-            v.waveform.clone(),
-            v.phase,
-            v.mode,
-        )
-        .map_err(param)?;
+        let inline = v.direction.is_some()
+            || v.amplitude.is_some()
+            || v.waveform.is_some()
+            || v.phase.is_some();
+        let components = if v.components.is_empty() {
+            let missing = |what: &str| BuildError::InvalidValue {
+                field: format!("{field}.{what}"),
+                reason: "missing: give direction and amplitude, or components".into(),
+            };
+            vec![
+                VibrationComponent::new(
+                    v.direction.ok_or_else(|| missing("direction"))?,
+                    v.amplitude.ok_or_else(|| missing("amplitude"))?,
+                    v.waveform.clone().unwrap_or(Waveform::Sine),
+                    v.phase.unwrap_or(0.0),
+                )
+                .map_err(param)?,
+            ]
+        } else if inline {
+            return Err(BuildError::InvalidValue {
+                field: format!("{field}.components"),
+                reason: "give either direction/amplitude/waveform/phase or components, not both"
+                    .into(),
+            });
+        } else {
+            v.components
+                .iter()
+                .enumerate()
+                .map(|(i, c)| {
+                    VibrationComponent::new(c.direction, c.amplitude, c.waveform.clone(), c.phase)
+                        .map_err(|source| BuildError::Param {
+                            field: format!("{field}.components[{i}]"),
+                            source,
+                        })
+                })
+                .collect::<Result<Vec<_>, _>>()?
+        };
+        let mut s =
+            VibrationSource::superimposed(&components, v.frequency, v.mode).map_err(param)?;
         if let Some(k) = v.tangential_stiffness {
             s = s.with_tangential_stiffness(k).map_err(param)?;
         }

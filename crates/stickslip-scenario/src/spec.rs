@@ -151,29 +151,57 @@ pub struct StickSlipSpec {
     pub anchor_gain: Option<f64>,
 }
 
-/// `[vibration.NAME]`: a vibration source (see `stickslip_rapier::VibrationSource`).
+/// `[vibration.NAME]`: a vibration source (see `stickslip_rapier::VibrationSource`): one
+/// component given inline (`direction`, `amplitude`, `waveform`, `phase`), or up to three
+/// superimposed ones in `components` (Popov's Eq. 9: normal, tangential and transverse
+/// oscillation at one frequency, e.g. an elliptical drive), not both.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct VibrationSpec {
     /// `{ kind = "normal" }`, `{ kind = "tangential", axis = [..] }` or
-    /// `{ kind = "transverse", axis = [..] }`.
-    pub direction: VibrationDirection,
-    /// `{ ratio = α }` (of the mean normal force) or `{ force = A }` (N).
-    pub amplitude: Amplitude,
-    /// Frequency (Hz).
+    /// `{ kind = "transverse", axis = [..] }` (single-component form).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub direction: Option<VibrationDirection>,
+    /// `{ ratio = α }` (of the mean normal force) or `{ force = A }` (N) (single-component
+    /// form).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub amplitude: Option<Amplitude>,
+    /// Frequency (Hz), shared by every component.
     pub frequency: f64,
-    /// Waveform, e.g. `{ kind = "sine" }` (default), `"sawtooth-right"`, `"square"`, ….
-    #[serde(default = "default_waveform")]
-    pub waveform: Waveform,
-    /// Phase offset (periods).
-    #[serde(default)]
-    pub phase: f64,
+    /// Waveform, e.g. `{ kind = "sine" }` (the default), `"sawtooth-right"`, `"square"`, …
+    /// (single-component form).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub waveform: Option<Waveform>,
+    /// Phase offset (periods; single-component form, default 0).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub phase: Option<f64>,
+    /// Superimposed components, `[{ direction = .., amplitude = .., waveform = .., phase =
+    /// .. }, ..]` (instead of the single-component fields).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub components: Vec<ComponentSpec>,
     /// `"time-resolved"` (default) or `"averaged"`.
     #[serde(default)]
     pub mode: VibrationMode,
     /// Tangential contact stiffness (N/m) for β in averaged mode.
     #[serde(default)]
     pub tangential_stiffness: Option<f64>,
+}
+
+/// One component of `[vibration.NAME] components = [..]`.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ComponentSpec {
+    /// `{ kind = "normal" }`, `{ kind = "tangential", axis = [..] }` or
+    /// `{ kind = "transverse", axis = [..] }`.
+    pub direction: VibrationDirection,
+    /// `{ ratio = α }` (of the mean normal force) or `{ force = A }` (N).
+    pub amplitude: Amplitude,
+    /// Waveform (default sine).
+    #[serde(default = "default_waveform")]
+    pub waveform: Waveform,
+    /// Phase offset (periods).
+    #[serde(default)]
+    pub phase: f64,
 }
 
 fn default_waveform() -> Waveform {

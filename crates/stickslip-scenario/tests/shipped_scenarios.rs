@@ -10,7 +10,10 @@
 //! - `popov_plate_sweep`: holding force is μ0 (1 − α) (Popov Eq. 4), and the steady sliding
 //!   coefficient rises with drag speed as μ0 (1 − α Ψ(β)) of the core theory (within 5 %);
 //! - `vibrating_conveyor`: with the vibration on the parts flow downhill, without it they stay;
-//! - `row_250`: ≥ 250 stickslip contacts, states tracked one-to-one, nothing explodes.
+//! - `row_250`: ≥ 250 stickslip contacts, states tracked one-to-one, nothing explodes;
+//! - `elliptical_drive` (superimposed `components`): each free sled drifts at the free drive
+//!   velocity of Popov's spring contact for its plate's ellipse (within 3 %), the two in
+//!   opposite directions.
 //!
 //! Every file also round-trips through `to_toml_string`, and every run keeps all poses finite.
 //! A scenario file without a check here fails the test, so new scenarios come with an invariant.
@@ -83,6 +86,7 @@ fn every_shipped_scenario_has_a_check() {
         "popov_plate_sweep",
         "vibrating_conveyor",
         "row_250",
+        "elliptical_drive",
         // The built-in one: its physics (EP holds, vibration conveys at Popov's speed, plain
         // holds) is checked by the CLI's main-job test, crates/stickslip-cli/tests/cli_run.rs.
         "showcase",
@@ -419,4 +423,32 @@ fn row_250_tracks_every_contact() {
         "row-250 after {} steps: regimes seen {regimes_seen:?}, energy {:.4} J",
         summary.steps, summary.dissipated_energy
     );
+}
+
+#[test]
+fn elliptical_drive_moves_the_sleds_at_the_theorys_speed() {
+    use stickslip_rapier::VibrationMode;
+    use stickslip_rapier::scenes::VibratingPlate;
+    let mut r = Runner::new(load("elliptical_drive").build().unwrap());
+    // 120 periods of 400 steps from rest, then the mean speed over 10 periods (0.2 s).
+    r.run(120 * 400);
+    let x0 = [x(&r, "sled_a"), x(&r, "sled_b")];
+    r.run(10 * 400);
+    for (i, (name, shift)) in [("sled_a", 0.25), ("sled_b", -0.25)]
+        .into_iter()
+        .enumerate()
+    {
+        let theory = VibratingPlate::elliptical(0.6, 0.75, shift, VibrationMode::TimeResolved)
+            .unwrap()
+            .theory_drive_velocity()
+            .unwrap();
+        let measured = (x(&r, name) - x0[i]) / 0.2;
+        println!("{name}: {measured:+.4e} m/s, theory {theory:+.4e} m/s");
+        assert!(theory.abs() > 1e-3, "the ellipse drives");
+        assert!(
+            (measured - theory).abs() <= 0.03 * theory.abs(),
+            "{name}: measured {measured} m/s, theory {theory} m/s"
+        );
+    }
+    assert_finite(&r);
 }
