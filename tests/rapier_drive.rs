@@ -29,6 +29,25 @@ fn warm(p: &VibratingPlate, v: f64) -> usize {
     4 + (3.0 * speed_scale(p) / v.abs().max(1e-9)).ceil().min(40.0) as usize
 }
 
+/// Drags the sled at `u` speed scales each and checks μ̄ against the theory within 3 %;
+/// returns the worst relative error.
+fn check_drag(p: &VibratingPlate, us: &[f64], label: &str) -> f64 {
+    let mut worst: f64 = 0.0;
+    for &u in us {
+        let v = u * speed_scale(p);
+        let got = p.drag(v, warm(p, v), 4).unwrap().mu_eff;
+        let theory = p.theory_mu(v).unwrap();
+        let err = (got - theory) / theory;
+        worst = worst.max(err.abs());
+        println!(
+            "{label} u {u:5.1}: rapier {got:.4} theory {theory:.4} ({:+.2} %)",
+            100.0 * err
+        );
+        assert!(err.abs() < 0.03, "{label} u {u}: {got} vs {theory}");
+    }
+    worst
+}
+
 #[test]
 fn in_plane_mean_friction_matches_the_theory_over_amplitudes_and_speeds() {
     let mut worst: f64 = 0.0;
@@ -36,22 +55,8 @@ fn in_plane_mean_friction_matches_the_theory_over_amplitudes_and_speeds() {
         // Tangential ratio A/F̄: 0.2 can stick (μ_s = μ0 − 0.2, Eq. 6), 0.75 slides in place.
         for ratio in [0.2, 0.75] {
             let p = VibratingPlate::elliptical(0.0, ratio, 0.0, mode).unwrap();
-            for u in [0.3, 1.0, 3.0, 10.0] {
-                let v = u * speed_scale(&p);
-                let got = p.drag(v, warm(&p, v), 4).unwrap().mu_eff;
-                let theory = p.theory_mu(v).unwrap();
-                let err = (got - theory) / theory;
-                worst = worst.max(err.abs());
-                println!(
-                    "{mode:?} tangential {ratio} u {u:5.1}: rapier {got:.4} theory {theory:.4} \
-                     ({:+.2} %)",
-                    100.0 * err
-                );
-                assert!(
-                    err.abs() < 0.03,
-                    "{mode:?} {ratio} u {u}: {got} vs {theory}"
-                );
-            }
+            let label = format!("{mode:?} tangential {ratio}");
+            worst = worst.max(check_drag(&p, &[0.3, 1.0, 3.0, 10.0], &label));
         }
     }
     // Transverse vibration (across the drag, Eq. 8 at rest): μ̄ climbs back to μ0 slowly.
@@ -68,21 +73,8 @@ fn in_plane_mean_friction_matches_the_theory_over_amplitudes_and_speeds() {
             )
             .unwrap(),
         ];
-        for u in [0.3, 1.0, 3.0] {
-            let v = u * speed_scale(&p);
-            let got = p.drag(v, warm(&p, v), 4).unwrap().mu_eff;
-            let theory = p.theory_mu(v).unwrap();
-            let err = (got - theory) / theory;
-            worst = worst.max(err.abs());
-            println!(
-                "{mode:?} transverse 0.3 u {u:5.1}: rapier {got:.4} theory {theory:.4} ({:+.2} %)",
-                100.0 * err
-            );
-            assert!(
-                err.abs() < 0.03,
-                "{mode:?} transverse u {u}: {got} vs {theory}"
-            );
-        }
+        let label = format!("{mode:?} transverse 0.3");
+        worst = worst.max(check_drag(&p, &[0.3, 1.0, 3.0], &label));
     }
     println!(
         "in-plane μ̄(v0): worst relative error {:.2} %",

@@ -42,6 +42,16 @@ const ONSET_RADIUS: f64 = 1e-9;
 const ON_RIM: f64 = 1e-12;
 /// Smallest step of a stick or slip phase, so that every event makes progress.
 const MIN_PROGRESS: f64 = 1e-12;
+
+/// An event found at `end` inside a piece [x0, b]: at least MIN_PROGRESS past `x0`, never past
+/// `b` (an event at the piece's end stays there).
+fn progressed(end: f64, x0: f64, b: f64) -> f64 {
+    if end < b {
+        end.max(x0 + MIN_PROGRESS).min(b)
+    } else {
+        end
+    }
+}
 /// Events per period beyond which the period is declared unresolvable.
 const MAX_EVENTS_PER_PERIOD: usize = 50_000;
 /// Change of the period map's state (scaled force) below which the motion is periodic.
@@ -493,11 +503,7 @@ impl<'a> Orbit<'a> {
             }
             prev = t;
         }
-        let end = if end < p.b {
-            end.max(x0 + MIN_PROGRESS).min(p.b)
-        } else {
-            end
-        };
+        let end = progressed(end, x0, p.b);
         sums.fx += integrate(x0, end, |s| force(s)[0]);
         sums.fy += integrate(x0, end, |s| force(s)[1]);
         sums.radius += integrate(x0, end, |s| self.radius(p, s));
@@ -546,11 +552,7 @@ impl<'a> Orbit<'a> {
             }
             prev = t;
         }
-        let end = if end < p.b {
-            end.max(x0 + MIN_PROGRESS).min(p.b)
-        } else {
-            end
-        };
+        let end = progressed(end, x0, p.b);
         let r_int = integrate(x0, end, |s| self.radius(p, s));
         sums.fx += sigma * r_int;
         sums.radius += r_int;
@@ -607,11 +609,7 @@ impl<'a> Orbit<'a> {
         } else {
             Mode::Stick
         };
-        let end = if end < p.b {
-            end.max(x0 + MIN_PROGRESS).min(p.b)
-        } else {
-            end
-        };
+        let end = progressed(end, x0, p.b);
         Ok((end, f_end, next))
     }
 
