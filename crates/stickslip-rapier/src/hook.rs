@@ -439,31 +439,22 @@ impl<H: PhysicsHooks> StickSlip<H> {
         }
         rec.slip_speed = if holding { 0.0 } else { speed as f32 };
 
-        // Stick anchors: correct drift while holding, follow the contact while slipping.
+        // Drift of a hold: the slip of the touching material points since the contact stuck
+        // (integrated from ġ at the contact point, so rolling adds none), corrected towards
+        // the law's elastic displacement through the solver's target velocity.
         let d_el = elastic_displacement(law, rec.force, f_n);
-        let (pose1, pose2) = (col1.position(), col2.position());
         if holding && rec.anchored && self.config.anchor_gain > 0.0 {
-            // A moving surface (conveyor hooks) carries collider 1's anchor along (an inverse
-            // transform per holding contact and step only where a surface moves).
-            let mut a1 = pose1.transform_point(rec.anchor1);
-            if surface != Vector::ZERO {
-                a1 += surface * dt as f32;
-                rec.anchor1 = pose1.inverse_transform_point(a1);
-            }
-            let drift = basis.tangential(pose2.transform_point(rec.anchor2) - a1) - d_el;
-            let v_corr = drift * (-(self.config.anchor_gain / dt) as f32);
+            let drift = basis.tangential(rec.anchor1 + slip_w * dt as f32);
+            rec.anchor1 = drift;
+            let v_corr = (drift - d_el) * (-(self.config.anchor_gain / dt) as f32);
             for c in m.solver_contacts.iter_mut() {
                 c.tangent_velocity += v_corr;
             }
         } else {
-            // Slipping: the anchors follow the contact. The first held step (after a slip,
-            // or a landing: an unloaded contact drops its anchors) anchors where the contact
-            // came to rest, with the elastic displacement of the state read back then, so
-            // re-sticking does not kick the bodies.
-            rec.anchor2 = pose2.inverse_transform_point(p);
-            rec.anchor1 = pose1.inverse_transform_point(p - d_el);
+            rec.anchor1 = d_el;
             rec.anchored = holding;
         }
+        let _ = (col1, col2);
     }
 }
 

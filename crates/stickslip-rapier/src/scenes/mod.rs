@@ -4,6 +4,8 @@
 
 use rapier3d::prelude::*;
 
+pub mod ordinary;
+
 /// A box resting on a large fixed ground slab.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BoxOnGround {
