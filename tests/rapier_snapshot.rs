@@ -576,8 +576,8 @@ fn inconsistent_snapshot_data_is_rejected() {
             }),
         ),
         (
-            "anchor_gain",
-            Box::new(|j| j["config"]["anchor_gain"] = 3.0.into()),
+            "stiffness_time",
+            Box::new(|j| j["config"]["stiffness_time"] = (-1.0).into()),
         ),
         (
             "frequency",

@@ -1,4 +1,4 @@
-//! Per-contact friction state that lives as long as its contact manifold: 60 bytes a contact.
+//! Per-contact friction state that lives as long as its contact manifold: 36 bytes a contact.
 //!
 //! Lookup is cheap: a manifold's `user_data` holds its slot index (+1) and an 8-bit
 //! generation, so the hook reaches its record with one uncontended read lock and one
@@ -17,7 +17,7 @@
 //!
 //! The stored form ([`Slot`]) packs the record: the slip speed of the last step (used only to
 //! extrapolate an accelerating slip) is kept as a bfloat16 (8 significant bits), the colliders
-//! by arena index, and lock, liveness, sweep parity, anchoring, regime and generation share
+//! by arena index, and lock, liveness, sweep parity, regime and generation share
 //! one 16-bit word. The hook works on the unpacked [`ContactRecord`].
 
 use rapier3d::prelude::{ColliderHandle, Vector};
@@ -26,6 +26,7 @@ use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap};
 use std::sync::atomic::{AtomicBool, AtomicU16, Ordering};
 use std::sync::{Mutex, RwLock};
+use stickslip_core::law::Regime;
 
 /// What identifies a manifold across steps.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -47,18 +48,12 @@ pub(crate) struct ContactRecord {
     pub limit: f32,
     /// Slip speed seen last step (m/s; 0 while holding), to 8 significant bits.
     pub slip_speed: f32,
-    /// Stick anchor on collider 1, in collider 1's frame.
-    pub anchor1: Vector,
-    /// Stick anchor on collider 2, in collider 2's frame.
-    pub anchor2: Vector,
     /// The wrapped user hook's own `user_data` for this manifold (we own the field).
     pub inner_user_data: u32,
     /// Mean normal force (N), low-pass filtered: sets the law's tangential stiffness.
     pub mean_normal_force: f32,
     /// Regime code (see `Regime`; `REGIME_RESET`), 255 until the law has run.
     pub regime: u8,
-    /// Whether the anchors are valid.
-    pub anchored: bool,
 }
 
 impl Default for ContactRecord {
@@ -68,13 +63,31 @@ impl Default for ContactRecord {
             slide: 0.0,
             limit: 0.0,
             slip_speed: 0.0,
-            anchor1: Vector::ZERO,
-            anchor2: Vector::ZERO,
             inner_user_data: 0,
             mean_normal_force: 0.0,
             regime: u8::MAX,
-            anchored: false,
         }
+    }
+}
+
+/// Regime code of a contact whose inputs were not usable this step (see `contact_step`).
+pub(crate) const REGIME_RESET: u8 = 254;
+
+/// The stored code of a regime.
+pub(crate) fn regime_code(r: Regime) -> u8 {
+    match r {
+        Regime::Sticking => 0,
+        Regime::StickSlip => 1,
+        Regime::Sliding => 2,
+    }
+}
+
+/// The regime of a stored code (reset and "not yet run" read as sticking).
+pub(crate) fn regime_of(code: u8) -> Regime {
+    match code {
+        1 => Regime::StickSlip,
+        2 => Regime::Sliding,
+        _ => Regime::Sticking,
     }
 }
 
@@ -93,7 +106,6 @@ const LOCK: u16 = 1;
 const LIVE: u16 = 1 << 1;
 /// Parity of the step that last touched the record (the sweep runs every step).
 const TOUCHED: u16 = 1 << 2;
-const ANCHORED: u16 = 1 << 3;
 /// The record has an entry in the key map.
 const KEYED: u16 = 1 << 7;
 const REGIME_SHIFT: u16 = 4;
@@ -113,7 +125,7 @@ fn unpack_regime(meta: u16) -> u8 {
     match (meta & REGIME_MASK) >> REGIME_SHIFT {
         c @ 0..=2 => c as u8,
         3 => u8::MAX,
-        _ => crate::hook::REGIME_RESET,
+        _ => REGIME_RESET,
     }
 }
 
@@ -125,12 +137,10 @@ fn parity(step: u32) -> u16 {
     if step & 1 == 1 { TOUCHED } else { 0 }
 }
 
-/// The stored record: 56 bytes of f32/u32 fields.
+/// The stored record: 32 bytes of f32/u32 fields.
 #[derive(Debug, Clone, Copy, Default)]
 struct Packed {
     force: [f32; 3],
-    anchor1: [f32; 3],
-    anchor2: [f32; 3],
     slide: f32,
     limit: f32,
     mean_normal_force: f32,
@@ -139,7 +149,7 @@ struct Packed {
     c2: u32,
 }
 
-/// One slot: 60 bytes.
+/// One slot: 36 bytes.
 pub(crate) struct Slot {
     packed: UnsafeCell<Packed>,
     slip_speed: UnsafeCell<u16>,
@@ -208,12 +218,9 @@ fn unpack(p: &Packed, slip: u16, meta: u16) -> ContactRecord {
         slide: p.slide,
         limit: p.limit,
         slip_speed: from_bf16(slip),
-        anchor1: Vector::from_array(p.anchor1),
-        anchor2: Vector::from_array(p.anchor2),
         inner_user_data: 0,
         mean_normal_force: p.mean_normal_force,
         regime: unpack_regime(meta),
-        anchored: meta & ANCHORED != 0,
     }
 }
 
@@ -221,8 +228,6 @@ fn pack(r: &ContactRecord, c1: u32, c2: u32) -> (Packed, u16) {
     (
         Packed {
             force: r.force.to_array(),
-            anchor1: r.anchor1.to_array(),
-            anchor2: r.anchor2.to_array(),
             slide: r.slide,
             limit: r.limit,
             mean_normal_force: r.mean_normal_force,
@@ -234,11 +239,7 @@ fn pack(r: &ContactRecord, c1: u32, c2: u32) -> (Packed, u16) {
 }
 
 fn with_state(meta: u16, r: &ContactRecord) -> u16 {
-    let mut m = (meta & !(REGIME_MASK | ANCHORED)) | pack_regime(r.regime);
-    if r.anchored {
-        m |= ANCHORED;
-    }
-    m
+    (meta & !REGIME_MASK) | pack_regime(r.regime)
 }
 
 fn index_of(h: ColliderHandle) -> u32 {
@@ -698,8 +699,8 @@ mod tests {
     }
 
     #[test]
-    fn a_slot_is_60_bytes() {
-        assert_eq!(std::mem::size_of::<Slot>(), 60);
+    fn a_slot_is_36_bytes() {
+        assert_eq!(std::mem::size_of::<Slot>(), 36);
     }
 
     #[test]
@@ -709,14 +710,11 @@ mod tests {
             slide: 0.75,
             limit: 0.4,
             slip_speed: 0.5,
-            anchor1: Vector::new(0.1, 0.2, 0.3),
-            anchor2: Vector::new(-0.1, -0.2, -0.3),
             inner_user_data: 0,
             mean_normal_force: 9.81,
             regime: 2,
-            anchored: true,
         };
-        for regime in [0, 1, 2, u8::MAX, crate::hook::REGIME_RESET] {
+        for regime in [0, 1, 2, u8::MAX, REGIME_RESET] {
             let rec = ContactRecord { regime, ..rec };
             let (p, slip) = pack(&rec, 3, 4);
             let meta = with_state(LIVE, &rec);
@@ -781,7 +779,7 @@ mod tests {
             store.with_record(ud, &key(i as u32, 1_000_000), 1, |_, _, _| ());
         }
         let full = store.heap_bytes();
-        assert!(full >= 10_000 * 60, "{full}");
+        assert!(full >= 10_000 * std::mem::size_of::<Slot>(), "{full}");
         // Step 2: only the first 100 survive.
         for (i, ud) in uds.iter_mut().enumerate().take(100) {
             store.with_record(ud, &key(i as u32, 1_000_000), 2, |_, _, _| ());
@@ -790,7 +788,7 @@ mod tests {
         assert_eq!(store.len(), 100);
         let after = store.heap_bytes();
         assert!(
-            after <= 100 * 60 + 64 * 60 + 1024,
+            after <= (100 + 64) * std::mem::size_of::<Slot>() + 1024,
             "{after} bytes for 100 contacts"
         );
     }

@@ -34,22 +34,28 @@
 //!
 //! Save and resume a world with [`WorldSnapshot`] (see [`snapshot`]).
 //!
-//! See [`hook`](crate) docs in the source (`hook.rs`) for how the law maps onto rapier's
-//! per-manifold friction, and [`VibrationSource`] for vibration.
+//! How the law maps onto rapier's per-manifold friction — how sticking is realized for every
+//! motion a rigid contact has (translation, rolling, spinning, stacks), and why a hold cannot
+//! pump energy — is in the docs of the per-manifold step (`contact_step.rs`); see
+//! [`VibrationSource`] for vibration.
 #![warn(missing_docs)]
 // `!(x > 0.0)` is deliberate throughout: it rejects NaN along with non-positive values.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 mod collider_map;
+mod contact_step;
 mod contact_store;
 mod hook;
 mod material;
+mod measure;
 mod modifier;
+mod read_back;
 mod report;
 pub mod scenes;
 pub mod snapshot;
 mod tangent;
 mod vibration;
+mod vibration_limit;
 
 pub use material::FrictionMaterial;
 pub use modifier::{

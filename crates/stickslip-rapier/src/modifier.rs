@@ -9,15 +9,12 @@ use rapier3d::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::sync::atomic::{AtomicBool, Ordering};
 use stickslip_core::ParamError;
-use stickslip_core::error::{in_range, positive};
+use stickslip_core::error::positive;
 
 /// Tuning of the rapier realization (validated with [`StickSlipConfig::validate`]).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct StickSlipConfig {
-    /// Fraction of a holding contact's drift from its stick anchor corrected per step
-    /// (through the solver's target tangent velocity); 0 turns anchoring off.
-    pub anchor_gain: f64,
     /// Averaging time (s) of the mean normal force F̄ that sets a compliant law's tangential
     /// stiffness k_t = c·F̄, so that a vibrating load changes the friction limit but not the
     /// stiffness (Popov's constant k_x). Contacts with a vibration source of frequency f
@@ -30,7 +27,6 @@ pub struct StickSlipConfig {
 impl Default for StickSlipConfig {
     fn default() -> Self {
         StickSlipConfig {
-            anchor_gain: 0.5,
             stiffness_time: 1.0,
         }
     }
@@ -39,7 +35,6 @@ impl Default for StickSlipConfig {
 impl StickSlipConfig {
     /// Checks the values.
     pub fn validate(&self) -> Result<(), ParamError> {
-        in_range("anchor_gain", self.anchor_gain, 0.0, 1.0)?;
         positive("stiffness_time", self.stiffness_time)?;
         Ok(())
     }
@@ -369,7 +364,7 @@ impl<H: PhysicsHooks> StickSlip<H> {
                 if m.data.solver_contacts.is_empty() || !(dt > 0.0) {
                     continue;
                 }
-                let report = crate::hook::report(
+                let report = crate::read_back::report(
                     m,
                     &rec,
                     (pair.collider1, pair.collider2),

@@ -4,7 +4,7 @@
 //! [`StickSlipSnapshot`] is the rest: everything the [`StickSlip`] modifier keeps except your
 //! wrapped hooks `H` — the tuning, the default and per-collider materials, the vibration
 //! sources, the colliders whose hook flag it turned on, the per-contact friction state (law
-//! state, stick anchors, mean normal forces, and the slot/generation layout that rapier's
+//! state, mean normal forces, and the slot/generation layout that rapier's
 //! manifolds point at through their `user_data`), the clock, the totals and the last reports.
 //! A world resumed from both continues exactly as the uninterrupted one, bit for bit.
 //!
@@ -79,7 +79,7 @@ use stickslip_core::law::Regime;
 use stickslip_core::waveform::Waveform;
 
 /// Version of the snapshot format written by this build (and the only one it reads).
-pub const FORMAT_VERSION: u32 = 2;
+pub const FORMAT_VERSION: u32 = 3;
 
 const MAGIC: [u8; 8] = *b"STKSLIP\0";
 /// Header kind of a [`StickSlipSnapshot`] file.
@@ -287,14 +287,11 @@ struct RecordSnapshot {
     slide: f32,
     limit: f32,
     slip_speed: f32,
-    anchor1: [f32; 3],
-    anchor2: [f32; 3],
     inner_user_data: u32,
     mean_normal_force: f32,
     /// Parity of the step that last touched it.
     touched_odd: bool,
     regime: u8,
-    anchored: bool,
 }
 
 impl From<&LiveImage> for RecordSnapshot {
@@ -307,13 +304,10 @@ impl From<&LiveImage> for RecordSnapshot {
             slide: r.slide,
             limit: r.limit,
             slip_speed: r.slip_speed,
-            anchor1: r.anchor1.to_array(),
-            anchor2: r.anchor2.to_array(),
             inner_user_data: r.inner_user_data,
             mean_normal_force: r.mean_normal_force,
             touched_odd: l.touched_odd,
             regime: r.regime,
-            anchored: r.anchored,
         }
     }
 }
@@ -323,8 +317,6 @@ impl RecordSnapshot {
         let finite = self
             .force
             .iter()
-            .chain(&self.anchor1)
-            .chain(&self.anchor2)
             .chain(&[
                 self.slide,
                 self.limit,
@@ -341,7 +333,10 @@ impl RecordSnapshot {
                 "negative friction limit, slip speed or mean normal force",
             ));
         }
-        if !matches!(self.regime, 0..=2 | crate::hook::REGIME_RESET | u8::MAX) {
+        if !matches!(
+            self.regime,
+            0..=2 | crate::contact_store::REGIME_RESET | u8::MAX
+        ) {
             return Err(invalid(
                 "contact state",
                 format!("unknown regime code {}", self.regime),
@@ -356,12 +351,9 @@ impl RecordSnapshot {
                 slide: self.slide,
                 limit: self.limit,
                 slip_speed: self.slip_speed,
-                anchor1: Vector::from_array(self.anchor1),
-                anchor2: Vector::from_array(self.anchor2),
                 inner_user_data: self.inner_user_data,
                 mean_normal_force: self.mean_normal_force,
                 regime: self.regime,
-                anchored: self.anchored,
             },
         })
     }

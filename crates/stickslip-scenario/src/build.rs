@@ -443,8 +443,8 @@ impl Scenario {
 
     fn config(&self) -> Result<StickSlipConfig, BuildError> {
         let mut cfg = StickSlipConfig::default();
-        if let Some(v) = self.stickslip.anchor_gain {
-            cfg.anchor_gain = v;
+        if let Some(v) = self.stickslip.stiffness_time {
+            cfg.stiffness_time = v;
         }
         cfg.validate().map_err(|source| BuildError::Param {
             field: "stickslip".into(),

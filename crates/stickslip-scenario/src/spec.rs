@@ -147,8 +147,8 @@ pub struct StickSlipSpec {
     /// Material of stickslip contacts whose colliders name none (a key of `[material]`).
     /// Defaults to the only material when there is exactly one.
     pub default_material: Option<String>,
-    /// `StickSlipConfig::anchor_gain`.
-    pub anchor_gain: Option<f64>,
+    /// `StickSlipConfig::stiffness_time` (s).
+    pub stiffness_time: Option<f64>,
 }
 
 /// `[vibration.NAME]`: a vibration source (see `stickslip_rapier::VibrationSource`): one

@@ -26,6 +26,7 @@ pub use elasto_plastic::{ElastoPlastic, EpVariant};
 pub use physical::Physical;
 pub use regularized::{Regularization, Regularized};
 
+use crate::sliding_curve::SlidingCurve;
 pub use crate::switch::Regime;
 use crate::vec2::Vec2;
 use serde::{Deserialize, Serialize};
@@ -115,6 +116,15 @@ pub trait FrictionLaw: Send + Sync + std::fmt::Debug {
     fn name(&self) -> &'static str;
 }
 
+/// How a law without sticking creeps under a load (see [`Law::creep`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Creep {
+    /// Steady creep speed (m/s).
+    pub speed: f64,
+    /// The sliding level μ_ve(|ġ|) the creep runs against.
+    pub level: f64,
+}
+
 /// Any of the built-in laws, serializable (e.g. in scenario files and collider materials).
 ///
 /// ```
@@ -146,6 +156,40 @@ pub enum Law {
 }
 
 impl Law {
+    /// Whether the law keeps no state between steps (Phys, Regul, Coulomb): its friction is
+    /// a function of the step's slip alone.
+    pub fn is_memoryless(&self) -> bool {
+        !matches!(self, Law::ElastoPlastic(_))
+    }
+
+    /// Whether the law has a sticking regime a rigid solver may hold (all but Regul, which
+    /// creeps under any load).
+    pub fn can_stick(&self) -> bool {
+        !matches!(self, Law::Regularized(_))
+    }
+
+    /// The law's contact stiffness per unit normal force, c (1/m), for a compliant law (EP):
+    /// its tangential stiffness is k_t = c·F_n. `None` for rigid laws.
+    pub fn stiffness(&self) -> Option<f64> {
+        match self {
+            Law::ElastoPlastic(l) => Some(l.c()),
+            _ => None,
+        }
+    }
+
+    /// How a law without sticking (Regul) creeps under a load of `ratio` = |F_t|/F_n at slip
+    /// speed `speed`: its steady creep speed and the sliding level μ_ve(|ġ|) it creeps
+    /// against; `None` for laws that stick.
+    pub fn creep(&self, ratio: f64, speed: f64) -> Option<Creep> {
+        match self {
+            Law::Regularized(l) => Some(Creep {
+                speed: l.creep_speed(ratio, speed),
+                level: l.curve().mu(speed),
+            }),
+            _ => None,
+        }
+    }
+
     /// [`ElastoPlastic::new`] wrapped in a [`Law`].
     pub fn elasto_plastic(
         c: f64,

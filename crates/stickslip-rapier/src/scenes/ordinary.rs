@@ -60,9 +60,9 @@ impl Ground {
     pub fn insert(self, world: &mut PhysicsWorld, half: f32, mu: f32) -> ColliderHandle {
         let n = (2.0 * half).round().max(1.0) as usize;
         let builder = match self {
-            Ground::Cuboid => ColliderBuilder::cuboid(half, 0.5, half).translation(Vector::new(
-                0.0, -0.5, 0.0,
-            )),
+            Ground::Cuboid => {
+                ColliderBuilder::cuboid(half, 0.5, half).translation(Vector::new(0.0, -0.5, 0.0))
+            }
             Ground::TriMesh => {
                 let mut vertices = Vec::with_capacity((n + 1) * (n + 1));
                 for i in 0..=n {
@@ -226,7 +226,7 @@ pub fn stack(kind: Stack, size: usize, tan_theta: f64, mu: f32, dt: f64) -> Ordi
             for layer in 0..size {
                 let y = thick + layer as f32 * 2.0 * thick;
                 for i in 0..4 {
-                    let across = (i as f32 - 1.5) * 0.5;
+                    let across = (i as f32 - 1.5) * 0.4;
                     let (at, half) = if layer % 2 == 0 {
                         (Vector::new(0.0, y, across), Vector::new(long, thick, wide))
                     } else {
@@ -246,7 +246,13 @@ pub fn stack(kind: Stack, size: usize, tan_theta: f64, mu: f32, dt: f64) -> Ordi
 
 /// A box (2 × 0.2 × 2 m, mass `box_mass`) on level ground, carrying `balls` balls of radius
 /// 0.1 m (mass `ball_mass` each) on its top, all friction `mu`. Body 0 is the box.
-pub fn box_with_balls(balls: usize, box_mass: f32, ball_mass: f32, mu: f32, dt: f64) -> OrdinaryScene {
+pub fn box_with_balls(
+    balls: usize,
+    box_mass: f32,
+    ball_mass: f32,
+    mu: f32,
+    dt: f64,
+) -> OrdinaryScene {
     let mut world = slope_world(0.0, dt);
     let ground = Ground::Cuboid.insert(&mut world, 30.0, mu);
     let half = Vector::new(1.0, 0.1, 1.0);

@@ -1,0 +1,441 @@
+//! The per-manifold step: a pure function from what the last solve left at a contact patch
+//! (normal force, measured friction, the slip of the touching points) and the contact's
+//! friction state to what the solver gets next (a friction limit and a target tangent
+//! velocity) and the updated state. The [`rapier3d::pipeline::PhysicsHooks`] impl
+//! (`crate::hook`) only gathers these inputs and writes the outputs.
+//!
+//! ## How sticking is realized
+//! rapier solves one friction constraint per manifold (`FrictionModel::Simplified`): a rigid
+//! constraint that drives the relative tangential velocity of the touching points to a target
+//! (0 unless a surface moves) with an impulse bounded by limit × normal impulse. stickslip keeps
+//! one friction state per manifold (a contact patch) and, each step:
+//!
+//! 1. **Hold or slip** is the solver's verdict under the limit the law gave it last step:
+//!    friction below that limit means the rigid constraint held the contact — the c → ∞ limit
+//!    of the law's elastic branch, so the state is the force the constraint carried, read back
+//!    (s⃗ = F_n μ⃗_meas); friction at the limit means the contact slipped, and the law integrates
+//!    the slip Δg⃗ = ġ dt of the **touching material points**, ġ = v₂ − v₁ at the contact point
+//!    (EP: exactly, bounded for any c and dt).
+//! 2. **The limit**: holding, the law's capacity before it yields (EP: max(|μ⃗|, μ_ba); Phys:
+//!    μ_ba; Coulomb: μ) — also for a contact whose solver friction touched the limit while the
+//!    law still calls it sticking (a memoryless law below its stick speed); slipping, the
+//!    law's own coefficient after the step (EP: its state, so a dragged contact feels the law's
+//!    elastic loading and yielding; Phys: μ_ve(|ġ|); Regul: μ(ġ)); then scaled by the
+//!    vibration source (`crate::vibration_limit`).
+//! 3. **The target velocity**: none while holding. Only the law or a source that *drives*
+//!    motion sets one: Regul's creep ġ_t0 r⁻¹(|μ_meas|/μ_ve) along the load, the averaged
+//!    drive velocity of in-plane vibration, a directed friction under compliant in-plane
+//!    vibration.
+//!
+//! **Why a hold cannot pump energy.** A holding contact gives the solver a friction row with
+//! target velocity 0 and a bounded impulse: each impulse of that row opposes the relative
+//! tangential velocity it acts on (projected Gauss–Seidel on a row with zero right-hand side
+//! only removes kinetic energy of the relative motion), so the row is dissipative whatever the
+//! other constraints do. Nothing remembers a position: a body that rolls without slipping has
+//! ġ = 0 at the contact, so neither the state nor the solver's target changes, and a stack
+//! at rest stays at rest as under plain rapier.
+//!
+//! **Tried and dropped** (measured in `tests/ordinary_*.rs`): stick anchors — material points
+//! fixed in each collider at the moment a contact stuck, their separation corrected through
+//! the target velocity. A rolling body's material points leave the contact (after a quarter
+//! turn the "drift" is 0.57 r): balls spun in place at 9× their rolling rate. Integrating the
+//! drift from ġ at the contact instead fixed rolling, but any position correction through the
+//! friction target is a bias velocity in friction, and coupled corrections pumped a crossed
+//! plank tower (every plank > 1 mm, 58 of 60 > 1 cm in 10 s on a floor tilted to 0.1, where
+//! plain rapier moves one plank by 1 mm), at gains from 0.05 to 0.5; rapier 0.36 itself keeps
+//! friction out of its bias pass for the same reason. Without correction, rapier's rigid
+//! friction row holds a loaded box as tightly as the law's elastic range (an incline at 0.95
+//! of break-away: −4.7 µm in 10 s against g_ba = 50 µm), and the stack stands.
+
+use crate::contact_store::{ContactRecord, REGIME_RESET, regime_code};
+use crate::tangent::TangentBasis;
+use crate::vibration::{VibrationMode, VibrationSource};
+use crate::vibration_limit::{in_plane_force, in_plane_limit, normal_factor, static_factor};
+use stickslip_core::law::{FrictionLaw, FrictionState, Law, Regime, StepInput};
+use stickslip_core::vec2::{self, Vec2};
+
+/// Relative margin below the imposed limit within which the solver's friction counts as
+/// saturated (the impulses are f32).
+const SATURATION: f64 = 1e-3;
+
+/// Beyond these a contact's inputs are garbage for an f32 solver, not physics: a force whose
+/// friction share overflows f32, a slip faster than anything rapier integrates meaningfully.
+const MAX_SANE_FORCE: f64 = 1e30;
+const MAX_SANE_SPEED: f64 = 1e15;
+
+/// Relative margin by which a directed friction's target velocity outruns what the step's
+/// friction impulse can reach (covers the rotational part of the effective mass).
+const DIRECT_MARGIN: f64 = 1e3;
+/// Cosine between the spring force and the slip above which the solver's own direction
+/// (against the slip) is the law's.
+const ALIGNED: f64 = 0.999;
+
+/// What the last solve left at a contact patch, and what governs it.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct ContactInput<'a> {
+    /// The contact's friction law.
+    pub law: &'a Law,
+    /// The vibration source of either collider.
+    pub source: Option<&'a VibrationSource>,
+    /// −1 when the source is on collider 1 (its surface moves the other body's base by −u in
+    /// the slip convention), +1 otherwise.
+    pub rel: f64,
+    /// The contact's tangent plane (for the source's axes).
+    pub basis: &'a TangentBasis,
+    /// Normal force over the last step (N).
+    pub normal_force: f64,
+    /// Measured friction over normal impulse of the last solve, μ⃗ with F_f(body 2) = −F_n μ⃗,
+    /// in the tangent plane.
+    pub measured_mu: Vec2,
+    /// Slip velocity of the touching points, ġ = v₂ − v₁ − surface, in the tangent plane (m/s).
+    pub slip: Vec2,
+    /// Step length (s), > 0.
+    pub dt: f64,
+    /// Time at the start of the step (s).
+    pub time: f64,
+    /// Sum of the two bodies' inverse masses (1/kg): how far one step's friction impulse
+    /// reaches, for a directed friction.
+    pub inv_mass: f64,
+    /// Averaging time of the mean normal force (s, `StickSlipConfig::stiffness_time`).
+    pub stiffness_time: f64,
+}
+
+/// What the solver gets for the next step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct ContactOutput {
+    /// Friction coefficient limit (≥ 0).
+    pub limit: f64,
+    /// Target relative tangential velocity to add (m/s, tangent plane), from the law or the
+    /// vibration source only; zero while holding.
+    pub target: Vec2,
+    /// Whether the contact holds (the solver's rigid friction row is the law's sticking).
+    pub holding: bool,
+}
+
+/// One step of one contact patch: updates `rec` and returns what the solver gets.
+pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> ContactOutput {
+    let ContactInput {
+        law,
+        source,
+        rel,
+        basis,
+        normal_force: f_n,
+        measured_mu,
+        slip,
+        dt,
+        time,
+        inv_mass,
+        stiffness_time,
+    } = *input;
+    let speed = vec2::norm(slip);
+    let mu_meas = vec2::norm(measured_mu);
+    // Non-finite or absurd inputs (a body given a NaN or 1e38 velocity, impulses that
+    // overflowed) never enter the friction state: the contact is reset, held by the law's
+    // static coefficient, and reported as reset.
+    if !(speed <= MAX_SANE_SPEED && f_n.abs() <= MAX_SANE_FORCE && mu_meas.is_finite()) {
+        *rec = ContactRecord {
+            inner_user_data: rec.inner_user_data,
+            regime: REGIME_RESET,
+            limit: law.static_coefficient() as f32,
+            ..ContactRecord::default()
+        };
+        return ContactOutput {
+            limit: law.static_coefficient(),
+            target: [0.0; 2],
+            holding: false,
+        };
+    }
+    let can_stick = law.can_stick();
+    let t_mid = time + 0.5 * dt;
+    let mut target = [0.0; 2];
+    let holding;
+    let mut limit;
+    if !(f_n > 0.0) {
+        // No load: a new contact, or one that lost its load (flight, separation inside the
+        // prediction distance). An unloaded spring relaxes (the law's state goes to zero);
+        // like a new contact, a landing seeds its mean normal force (the stiffness c·F̄) with
+        // its first load, so an impact is as stiff as the seed's law, Eq. 4.
+        rec.force = Default::default();
+        rec.slide = 0.0;
+        rec.mean_normal_force = 0.0;
+        holding = can_stick;
+        rec.regime = regime_code(Regime::Sticking);
+        limit = if can_stick {
+            law.static_coefficient()
+        } else {
+            law.sliding_coefficient(speed)
+        };
+        if let Some(s) = source {
+            limit *= static_factor(s, limit, None);
+        }
+    } else {
+        // Mean normal force for the tangential stiffness: filtered, seeded at first load.
+        let f_mean = if rec.mean_normal_force > 0.0 {
+            let tau = source.map_or(stiffness_time, |s| stiffness_time.max(5.0 / s.frequency()));
+            let w = (dt / tau).min(1.0);
+            rec.mean_normal_force as f64 + w * (f_n - rec.mean_normal_force as f64)
+        } else {
+            f_n
+        };
+        rec.mean_normal_force = f_mean as f32;
+        let vib = source.map_or(1.0, |s| normal_factor(s, f_n, t_mid));
+        // Time-resolved in-plane vibration on a compliant law while slipping: the law
+        // integrates the seed's spring force S = s + a (see `vibration`).
+        let compliant = match (source, law.stiffness()) {
+            (Some(s), Some(c)) if s.mode() == VibrationMode::TimeResolved && s.has_in_plane() => {
+                Some((s, c * f_mean))
+            }
+            _ => None,
+        };
+        let f_eff = f_n * vib;
+        let measured = vec2::scale(measured_mu, f_n);
+        let step_input = |slip: Vec2| StepInput {
+            slip,
+            dt,
+            normal_force: f_eff,
+            stiffness_normal_force: f_mean,
+        };
+        let saturated = rec.limit > 0.0 && mu_meas >= (1.0 - SATURATION) * rec.limit as f64;
+        // A compliant contact under in-plane vibration cannot hold once the spring force it
+        // carries, s + a(t), leaves the friction circle (Eq. 9): it slips now.
+        let overloaded = compliant.is_some_and(|(s, _)| {
+            let a = in_plane_force(s, f_mean, basis, rel, t_mid);
+            vec2::norm(vec2::add(measured, a)) > law.static_coefficient() * f_eff
+        });
+        holding = !saturated && can_stick && !overloaded;
+        let mut state = if holding {
+            FrictionState::with_force(measured)
+        } else {
+            FrictionState {
+                force: basis.project(rec.force),
+                slide: rec.slide as f64,
+            }
+        };
+        let out = if holding {
+            law.step(&mut state, &step_input([0.0; 2]))
+        } else {
+            // rapier moves the bodies with the velocity *after* this step's solve, so the slip
+            // this step makes is ġ_{k+1} dt. While the slip accelerates (break-away),
+            // extrapolate it, ġ_{k+1} ≈ ġ_k + (|ġ_k| − |ġ_{k−1}|) along ġ_k, at most doubled;
+            // otherwise ġ_k: the law is then not one step behind the motion it resists.
+            let growth = (speed - rec.slip_speed as f64).clamp(0.0, speed);
+            let ahead = if speed > 0.0 {
+                1.0 + growth / speed
+            } else {
+                1.0
+            };
+            let g = vec2::scale(slip, dt * ahead);
+            match compliant {
+                Some((s, k_t)) if k_t > 0.0 && k_t.is_finite() => {
+                    let a0 = in_plane_force(s, f_mean, basis, rel, time);
+                    let a1 = in_plane_force(s, f_mean, basis, rel, time + dt);
+                    state.force = vec2::add(state.force, a0);
+                    let g = vec2::add(g, vec2::scale(vec2::sub(a1, a0), 1.0 / k_t));
+                    let out = law.step(&mut state, &step_input(g));
+                    state.force = vec2::sub(state.force, a1);
+                    out
+                }
+                _ => law.step(&mut state, &step_input(g)),
+            }
+        };
+        rec.force = basis.lift(state.force);
+        rec.slide = state.slide as f32;
+        rec.regime = regime_code(if holding && out.regime == Regime::Sliding {
+            Regime::StickSlip
+        } else {
+            out.regime
+        });
+        // Holding: the law's capacity before it yields. Slipping: the law is resolved by the
+        // step, so the solver applies exactly the law's force |μ⃗| F_n — except where the law
+        // still calls the contact sticking without memory of a spring (a memoryless law below
+        // its stick speed: the friction touched the limit but nothing slid), which keeps the
+        // capacity; EP's elastic branch gives its spring force, c·F_n·g.
+        let mu_law = if holding || (out.regime == Regime::Sticking && law.is_memoryless()) {
+            out.limit
+        } else {
+            vec2::norm(out.mu)
+        };
+        limit = mu_law * vib;
+        if compliant.is_some() && !holding {
+            // The bodies feel the elastic part s of the spring force, exactly: saturate the
+            // solver along −ŝ with a target relative velocity far beyond what one step's
+            // friction impulse |s| dt can reach.
+            limit = vec2::norm(state.force) / f_n;
+            if let Some(dir) = vec2::normalize(state.force) {
+                let along = vec2::normalize(slip).map_or(0.0, |e| vec2::dot(e, dir));
+                if along < ALIGNED {
+                    let reach = DIRECT_MARGIN * limit * f_n * dt * inv_mass + speed;
+                    let v = vec2::sub(slip, vec2::scale(dir, reach));
+                    if v.iter().all(|x| x.is_finite()) {
+                        target = v;
+                    }
+                }
+            }
+        } else if let Some(s) = source {
+            let (l, drive) = in_plane_limit(
+                s, limit, f_n, f_mean, rel, basis, out.mu, slip, t_mid, holding, law,
+            );
+            limit = l;
+            if let Some(v) = drive.filter(|v| v.iter().all(|x| x.is_finite())) {
+                target = v;
+            }
+        }
+        // A law without sticking (Regul), realized implicitly: the solver gets the full
+        // sliding level and a target slip velocity equal to the law's creep speed under the
+        // load it carried, ġ = ġ_t0 r⁻¹(|μ_meas|/μ_ve) along the load; at equilibrium that is
+        // exactly the law.
+        if let Some(creep) = law.creep(mu_meas, speed) {
+            limit = creep.level;
+            if let Some(dir) = vec2::normalize(measured_mu) {
+                target = vec2::add(target, vec2::scale(dir, creep.speed));
+            }
+        }
+    }
+    let limit = limit.max(0.0);
+    rec.limit = limit as f32;
+    rec.slip_speed = if holding { 0.0 } else { speed as f32 };
+    ContactOutput {
+        limit,
+        target,
+        holding,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rapier3d::prelude::Vector;
+    use stickslip_core::sliding_curve::Curve;
+
+    fn ep() -> Law {
+        Law::elasto_plastic(1e5, 0.5, 0.5, Curve::constant(0.5).unwrap()).unwrap()
+    }
+
+    fn basis() -> TangentBasis {
+        TangentBasis::new(Vector::Y)
+    }
+
+    fn input<'a>(law: &'a Law, basis: &'a TangentBasis, mu: Vec2, slip: Vec2) -> ContactInput<'a> {
+        ContactInput {
+            law,
+            source: None,
+            rel: 1.0,
+            basis,
+            normal_force: 100.0,
+            measured_mu: mu,
+            slip,
+            dt: 1.0 / 60.0,
+            time: 0.0,
+            inv_mass: 0.1,
+            stiffness_time: 1.0,
+        }
+    }
+
+    /// A contact that has held for a step (its limit set), carrying `mu`.
+    fn held(law: &Law, mu: Vec2) -> ContactRecord {
+        let b = basis();
+        let mut rec = ContactRecord::default();
+        step_contact(&mut rec, &input(law, &b, [0.0; 2], [0.0; 2]));
+        step_contact(&mut rec, &input(law, &b, mu, [0.0; 2]));
+        rec
+    }
+
+    #[test]
+    fn rolling_without_slip_changes_nothing_and_corrects_nothing() {
+        // A rolling contact: zero slip at the touching points, a steady friction share.
+        let b = basis();
+        for law in [
+            ep(),
+            Law::Coulomb(stickslip_core::law::Coulomb::new(0.5).unwrap()),
+        ] {
+            let mut rec = held(&law, [0.12, 0.0]);
+            let before = rec;
+            for _ in 0..100 {
+                let out = step_contact(&mut rec, &input(&law, &b, [0.12, 0.0], [0.0; 2]));
+                assert!(out.holding);
+                assert_eq!(out.target, [0.0; 2]);
+                assert_eq!(out.limit, 0.5);
+            }
+            assert_eq!(rec, before, "{}", law.name());
+        }
+    }
+
+    #[test]
+    fn a_held_contact_under_constant_load_neither_drifts_nor_corrects() {
+        let b = basis();
+        let law = ep();
+        let mut rec = held(&law, [0.3, 0.1]);
+        for _ in 0..1000 {
+            let out = step_contact(&mut rec, &input(&law, &b, [0.3, 0.1], [0.0; 2]));
+            assert!(out.holding);
+            assert_eq!(out.target, [0.0; 2]);
+        }
+        let carried = b.project(rec.force);
+        assert!((carried[0] - 30.0).abs() < 1e-3 && (carried[1] - 10.0).abs() < 1e-3);
+        assert_eq!(rec.regime, regime_code(Regime::Sticking));
+    }
+
+    #[test]
+    fn a_hold_is_passive_over_a_closed_cycle() {
+        // Load a held contact around a closed cycle of friction shares below break-away: the
+        // solver only ever gets a zero target (no work done by the hold) and the state
+        // returns to where it started.
+        let b = basis();
+        let law = ep();
+        let mut rec = held(&law, [0.0, 0.0]);
+        let start = rec;
+        let n = 360;
+        for k in 0..=n {
+            let phase = std::f64::consts::TAU * k as f64 / n as f64;
+            let mu = [0.4 * phase.sin(), 0.4 * (1.0 - phase.cos()) / 2.0];
+            let out = step_contact(&mut rec, &input(&law, &b, mu, [0.0; 2]));
+            assert!(out.holding && out.target == [0.0; 2]);
+        }
+        assert!(b.project(rec.force).iter().all(|x| x.abs() < 1e-9));
+        assert_eq!(rec.slide, start.slide);
+    }
+
+    #[test]
+    fn saturation_slips_and_the_law_integrates_the_slip_of_the_touching_points() {
+        let b = basis();
+        let law = ep();
+        let mut rec = held(&law, [0.2, 0.0]);
+        // The solver's friction reached the limit (0.5) and the contact slips at 1 m/s.
+        let out = step_contact(&mut rec, &input(&law, &b, [0.5, 0.0], [1.0, 0.0]));
+        assert!(!out.holding);
+        assert_eq!(rec.regime, regime_code(Regime::Sliding));
+        assert!((out.limit - 0.5).abs() < 1e-6, "{}", out.limit);
+        assert_eq!(out.target, [0.0; 2]);
+    }
+
+    #[test]
+    fn a_memoryless_law_below_its_stick_speed_keeps_its_capacity() {
+        // Phys: the friction touched the limit but nothing slid (a coupled contact in a
+        // stack): the limit stays μ_ba, never the zero friction of "sliding at ġ = 0".
+        let b = basis();
+        let law = Law::Physical(
+            stickslip_core::law::Physical::new(0.5, Curve::constant(0.4).unwrap()).unwrap(),
+        );
+        let mut rec = held(&law, [0.1, 0.0]);
+        rec.limit = 0.1;
+        let out = step_contact(&mut rec, &input(&law, &b, [0.1, 0.0], [1e-9, 0.0]));
+        assert!(!out.holding);
+        assert_eq!(out.limit, 0.5);
+    }
+
+    #[test]
+    fn garbage_inputs_reset_the_contact() {
+        let b = basis();
+        let law = ep();
+        let mut rec = held(&law, [0.2, 0.0]);
+        let mut bad = input(&law, &b, [f64::NAN, 0.0], [0.0; 2]);
+        let out = step_contact(&mut rec, &bad);
+        assert_eq!(rec.regime, REGIME_RESET);
+        assert_eq!(out.limit, 0.5);
+        bad.measured_mu = [0.0; 2];
+        bad.slip = [f64::INFINITY, 0.0];
+        step_contact(&mut rec, &bad);
+        assert_eq!(rec.regime, REGIME_RESET);
+        assert!(rec.force.is_finite());
+    }
+}

@@ -1,0 +1,79 @@
+//! What a manifold tells after a solve: its normal force and measured friction, the centroid
+//! of its solver contacts, and the velocity of a body's material point.
+
+use rapier3d::prelude::*;
+
+/// Normal and friction measurement of a manifold from the last solve.
+pub(crate) struct Measured {
+    /// Normal force over the step (N).
+    pub normal_force: f64,
+    /// Friction impulse over normal impulse of the last substep: μ⃗ with F_f(body 2) = −F_n μ⃗.
+    pub mu: Vector,
+}
+
+pub(crate) fn measure(m: &ContactManifold, dt: f64) -> Measured {
+    let (mut impulse, mut warm) = (0.0f64, 0.0f64);
+    let mut friction = Vector::ZERO;
+    for (i, p) in m.points.iter().enumerate() {
+        impulse += p.data.impulse as f64;
+        warm += p.data.warmstart_impulse as f64;
+        // One friction constraint per group of 4 points stores its impulse on each point.
+        if i % 4 == 0 {
+            friction += p.data.warmstart_tangent_world;
+        }
+    }
+    Measured {
+        normal_force: if dt > 0.0 { impulse / dt } else { 0.0 },
+        mu: if warm > 0.0 {
+            friction / warm as f32
+        } else {
+            Vector::ZERO
+        },
+    }
+}
+
+pub(crate) fn centroid(contacts: &[SolverContact]) -> (Vector, Vector) {
+    let k = contacts.len().max(1) as f32;
+    let mut p = Vector::ZERO;
+    let mut surface = Vector::ZERO;
+    for c in contacts {
+        p += (c.anchor1 + c.anchor2) * 0.5;
+        surface += c.tangent_velocity;
+    }
+    (p / k, surface / k)
+}
+
+pub(crate) fn point_velocity(
+    bodies: &RigidBodySet,
+    h: Option<RigidBodyHandle>,
+    p: Vector,
+) -> Vector {
+    h.and_then(|h| bodies.get(h))
+        .map(|b| b.velocity_at_point(p))
+        .unwrap_or(Vector::ZERO)
+}
+
+/// The world-space centroid of a manifold's solver contacts after the step, and their mean
+/// target velocity. After the hook, rapier re-expresses a dynamic body's solver anchors in
+/// that body's frame, so the anchors are not world points any more; the manifold's local
+/// points and the colliders' poses are.
+pub(crate) fn world_centroid(
+    m: &ContactManifold,
+    colliders: &ColliderSet,
+    (c1, c2): (ColliderHandle, ColliderHandle),
+) -> Option<(Vector, Vector)> {
+    let pose = |h: ColliderHandle, sub: Option<&Pose>| {
+        let at = *colliders.get(h)?.position();
+        Some(sub.map_or(at, |s| at * *s))
+    };
+    let (pos1, pos2) = (pose(c1, m.subshape_pos1())?, pose(c2, m.subshape_pos2())?);
+    let contacts = &m.data.solver_contacts;
+    let (mut p, mut surface) = (Vector::ZERO, Vector::ZERO);
+    for c in contacts {
+        let point = m.points.get(c.contact_indices()[0] as usize)?;
+        p += (pos1 * point.local_p1 + pos2 * point.local_p2) * 0.5;
+        surface += c.tangent_velocity;
+    }
+    let k = contacts.len().max(1) as f32;
+    Some((p / k, surface / k))
+}

@@ -1,0 +1,99 @@
+//! The read-back of one manifold after a step: its [`ContactReport`] in world space.
+
+use crate::contact_store::{ContactRecord, REGIME_RESET, regime_of};
+use crate::measure::{measure, point_velocity, world_centroid};
+use crate::report::ContactReport;
+use crate::tangent::TangentBasis;
+use rapier3d::prelude::*;
+use stickslip_core::law::Regime;
+
+/// The read-back of one manifold after the step (`moving_surfaces`: whether the wrapped hook
+/// gives surfaces velocities, see `StickSlip::moving_surfaces`).
+pub(crate) fn report(
+    m: &ContactManifold,
+    rec: &ContactRecord,
+    (c1, c2): (ColliderHandle, ColliderHandle),
+    bodies: &RigidBodySet,
+    colliders: &ColliderSet,
+    dt: f64,
+    moving_surfaces: bool,
+) -> ContactReport {
+    if rec.regime == REGIME_RESET {
+        return reset_report(rec, c1, c2);
+    }
+    let Some((p, targets)) = world_centroid(m, colliders, (c1, c2)) else {
+        return reset_report(rec, c1, c2);
+    };
+    // The target velocities hold stickslip's own (anchor correction, Regul's creep,
+    // vibration drive) besides a wrapped hook's surface velocity; without such a hook they
+    // are not a surface's motion at all.
+    let surface = if moving_surfaces {
+        targets
+    } else {
+        Vector::ZERO
+    };
+    let meas = measure(m, dt);
+    let n = m.data.normal;
+    let basis = TangentBasis::new(n);
+    let slip = basis.tangential(
+        point_velocity(bodies, m.data.rigid_body2, p)
+            - point_velocity(bodies, m.data.rigid_body1, p)
+            - surface,
+    );
+    let friction = basis.tangential(meas.mu) * -(meas.normal_force as f32);
+    let f_n = meas.normal_force;
+    let report = ContactReport {
+        collider1: c1,
+        collider2: c2,
+        point: p.to_array(),
+        normal: n.to_array(),
+        regime: regime_of(rec.regime),
+        mu: if f_n > 0.0 {
+            rec.force.length() as f64 / f_n
+        } else {
+            0.0
+        },
+        limit: m.data.friction as f64,
+        normal_force: f_n,
+        friction_force: friction.to_array(),
+        slip_velocity: slip.to_array(),
+        dissipated_power: (-(friction.dot(slip)) as f64).max(0.0),
+        reset: false,
+    };
+    // Inputs that turned non-finite after the hook ran (the solve itself overflowed).
+    let numbers = [
+        report.mu,
+        report.limit,
+        report.normal_force,
+        report.dissipated_power,
+    ];
+    let vectors = [
+        report.point,
+        report.normal,
+        report.friction_force,
+        report.slip_velocity,
+    ];
+    if numbers.iter().all(|x| x.is_finite()) && vectors.iter().flatten().all(|x| x.is_finite()) {
+        report
+    } else {
+        reset_report(rec, c1, c2)
+    }
+}
+
+/// The report of a contact whose inputs were not usable: zeros, flagged.
+fn reset_report(rec: &ContactRecord, c1: ColliderHandle, c2: ColliderHandle) -> ContactReport {
+    ContactReport {
+        collider1: c1,
+        collider2: c2,
+        point: [0.0; 3],
+        normal: [0.0; 3],
+        regime: Regime::Sticking,
+        mu: 0.0,
+        limit: rec.limit as f64,
+        normal_force: 0.0,
+        friction_force: [0.0; 3],
+        slip_velocity: [0.0; 3],
+        dissipated_power: 0.0,
+        reset: true,
+    }
+}
