@@ -377,9 +377,9 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
         "### Memory per active contact\n\n\
          stickslip keeps one record per contact manifold (a patch of up to 4 points under \
          rapier's `Simplified` friction, which solves one friction constraint per manifold): \
-         `StickSlip::STATE_BYTES_PER_CONTACT` = **{state_bytes} bytes** (law state, stick \
-         anchors, bookkeeping), i.e. {} bytes per solver contact point on a box face. \
-         The slot packs the record: f32 law state and anchors, the colliders by arena index, \
+         `StickSlip::STATE_BYTES_PER_CONTACT` = **{state_bytes} bytes** (law state, mean \
+         normal force, bookkeeping), i.e. {} bytes per solver contact point on a box face. \
+         The slot packs the record: f32 law state, the colliders by arena index, \
          the last slip speed as a bfloat16, and lock, liveness, sweep parity, regime and \
          generation in one 16-bit word. Measured besides: the live heap of the EP world minus \
          the no-op-hook world of the same scene (both built and settled the same way), which \
