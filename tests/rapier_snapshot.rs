@@ -515,7 +515,7 @@ fn inconsistent_snapshot_data_is_rejected() {
     let key = serde_json::json!({
         "c1": handle(&live["record"]["c1"]),
         "c2": handle(&live["record"]["c2"]),
-        "features": 12345,
+        "part": {"Subshapes": [3, 4]},
         "slot": live_slot,
     });
     let push_key = move |edit: fn(&mut serde_json::Value)| -> Edit {
@@ -539,7 +539,7 @@ fn inconsistent_snapshot_data_is_rejected() {
                     .push(serde_json::json!({
                         "c1": {"index": 0, "generation": 0},
                         "c2": {"index": 1, "generation": 0},
-                        "features": 1,
+                        "part": "Whole",
                         "slot": free_slot,
                     }));
             }),
@@ -552,7 +552,7 @@ fn inconsistent_snapshot_data_is_rejected() {
             "contact store",
             Box::new({
                 let twice = push_key(|_| {});
-                let again = push_key(|k| k["features"] = 999.into());
+                let again = push_key(|k| k["part"] = serde_json::json!({"Cluster": [0, 50, 0]}));
                 move |j| {
                     twice(j);
                     again(j);

@@ -14,6 +14,10 @@ use stickslip::rapier::{FrictionMaterial, ReadBack, StickSlip};
 pub enum Friction {
     /// rapier's own Coulomb friction (the colliders' coefficient).
     Plain,
+    /// rapier's own friction, every collider flagged for a contact hook that changes
+    /// nothing: rapier never recycles the contacts of a hooked pair (it recomputes them every
+    /// step), which alone changes some scenes — the baseline for what any hook gets.
+    Hooked,
     /// stickslip with this law on every collider.
     Law(&'static str, Law),
 }
@@ -23,6 +27,7 @@ impl Friction {
     pub fn name(&self) -> &'static str {
         match self {
             Friction::Plain => "plain",
+            Friction::Hooked => "no-op hook",
             Friction::Law(n, _) => n,
         }
     }
@@ -61,10 +66,16 @@ pub fn all_laws(mu: f64) -> Vec<Friction> {
     ]
 }
 
+/// A contact hook that changes nothing.
+pub struct NoOp;
+
+impl PhysicsHooks for NoOp {}
+
 /// A scene and the friction running it.
 pub struct Run {
     pub scene: OrdinaryScene,
     pub modifier: Option<StickSlip>,
+    hooked: bool,
 }
 
 impl Run {
@@ -72,6 +83,12 @@ impl Run {
     pub fn new(mut scene: OrdinaryScene, friction: &Friction) -> Run {
         let modifier = match friction {
             Friction::Plain => None,
+            Friction::Hooked => {
+                for c in scene.all_colliders() {
+                    scene.world.colliders[c].set_active_hooks(ActiveHooks::MODIFY_SOLVER_CONTACTS);
+                }
+                None
+            }
             Friction::Law(_, law) => {
                 let mut m = StickSlip::new(FrictionMaterial::new(law.clone()))
                     .with_read_back(ReadBack::Contacts);
@@ -81,12 +98,17 @@ impl Run {
                 Some(m)
             }
         };
-        Run { scene, modifier }
+        Run {
+            scene,
+            modifier,
+            hooked: matches!(friction, Friction::Hooked),
+        }
     }
 
     pub fn step(&mut self) {
         match self.modifier.as_mut() {
             Some(m) => m.step(&mut self.scene.world),
+            None if self.hooked => self.scene.world.step_with_events(&NoOp, &()),
             None => self.scene.world.step(),
         }
     }

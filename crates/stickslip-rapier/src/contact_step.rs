@@ -63,6 +63,13 @@ const SATURATION: f64 = 1e-3;
 const MAX_SANE_FORCE: f64 = 1e30;
 const MAX_SANE_SPEED: f64 = 1e15;
 
+/// A solve warm-started with less than this share of the last solve's normal impulse starts
+/// cold: the contact forms again.
+const WARM: f64 = 0.9;
+/// Steps a contact takes to form after a cold solve: the cold one, and the one that stops
+/// the slip it let through.
+const FORMING_STEPS: u8 = 2;
+
 /// Relative margin by which a directed friction's target velocity outruns what the step's
 /// friction impulse can reach (covers the rotational part of the effective mass).
 const DIRECT_MARGIN: f64 = 1e3;
@@ -98,6 +105,9 @@ pub(crate) struct ContactInput<'a> {
     pub inv_mass: f64,
     /// Averaging time of the mean normal force (s, `StickSlipConfig::stiffness_time`).
     pub stiffness_time: f64,
+    /// Share of the last solve's normal impulse the solver starts this step with (1 unless
+    /// rapier re-picked the points of a clustered patch).
+    pub warm_start: f64,
 }
 
 /// What the solver gets for the next step.
@@ -126,6 +136,7 @@ pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> Con
         time,
         inv_mass,
         stiffness_time,
+        warm_start: _,
     } = *input;
     let speed = vec2::norm(slip);
     let mu_meas = vec2::norm(measured_mu);
@@ -158,6 +169,8 @@ pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> Con
         rec.force = Default::default();
         rec.slide = 0.0;
         rec.mean_normal_force = 0.0;
+        // The coming solve builds the normal force from nothing.
+        rec.forming = FORMING_STEPS;
         holding = can_stick;
         rec.regime = regime_code(Regime::Sticking);
         limit = if can_stick {
@@ -169,8 +182,27 @@ pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> Con
             limit *= static_factor(s, limit, None);
         }
     } else {
+        // The two steps after a solve that started cold — a new contact's or a landing's first,
+        // or one that rapier warm-started with little of the last solve's normal impulse (a
+        // clustered patch of a mesh whose points it re-picked) while the contact held: that solve built the normal
+        // force up while friction was capped by the part built so far, and the next stops the
+        // slip that let through. A slip there is the contact forming, not the law yielding:
+        // plain rapier slips the same (a box put down on a slope at 0.9 of break-away moves
+        // 66 µm, then 20 µm, at 120 Hz), and an elasto-plastic law with g_ba of a few µm would
+        // take it for break-away and slide off at μ_k. The contact holds at its capacity, its
+        // state seeded with the friction it carried; only a slip under a limit the law set
+        // counts.
+        let landing = rec.forming > 0;
+        // A slipping contact's friction is the law's sliding level whatever the warm start.
+        let was_holding = rec.slip_speed == 0.0;
+        rec.forming = if was_holding && input.warm_start < WARM {
+            FORMING_STEPS
+        } else {
+            rec.forming.saturating_sub(1)
+        };
+        let first_load = !(rec.mean_normal_force > 0.0);
         // Mean normal force for the tangential stiffness: filtered, seeded at first load.
-        let f_mean = if rec.mean_normal_force > 0.0 {
+        let f_mean = if !first_load {
             let tau = source.map_or(stiffness_time, |s| stiffness_time.max(5.0 / s.frequency()));
             let w = (dt / tau).min(1.0);
             rec.mean_normal_force as f64 + w * (f_n - rec.mean_normal_force as f64)
@@ -195,7 +227,8 @@ pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> Con
             normal_force: f_eff,
             stiffness_normal_force: f_mean,
         };
-        let saturated = rec.limit > 0.0 && mu_meas >= (1.0 - SATURATION) * rec.limit as f64;
+        let saturated =
+            !landing && rec.limit > 0.0 && mu_meas >= (1.0 - SATURATION) * rec.limit as f64;
         // A compliant contact under in-plane vibration cannot hold once the spring force it
         // carries, s + a(t), leaves the friction circle (Eq. 9): it slips now.
         let overloaded = compliant.is_some_and(|(s, _)| {
@@ -328,6 +361,7 @@ mod tests {
             time: 0.0,
             inv_mass: 0.1,
             stiffness_time: 1.0,
+            warm_start: 1.0,
         }
     }
 

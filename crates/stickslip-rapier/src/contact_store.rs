@@ -5,7 +5,7 @@
 //! per-slot spin lock (a bit of the slot's own metadata word), never a global map under one
 //! lock per contact. Only manifolds whose `user_data` is 0 — new ones, and rapier's merged
 //! "cluster" manifolds whose `user_data` is reset every step — go through a map keyed by the
-//! collider pair and the first point's feature ids (which persist); a manifold found through
+//! collider pair and which of its manifolds it is ([`ManifoldPart`]); a manifold found through
 //! its `user_data` leaves that map, so at steady state it holds only the cluster manifolds.
 //!
 //! Rapier does not report vanished manifolds, so [`ContactStore::sweep`] drops every record
@@ -28,13 +28,36 @@ use std::sync::atomic::{AtomicBool, AtomicU16, Ordering};
 use std::sync::{Mutex, RwLock};
 use stickslip_core::law::Regime;
 
-/// What identifies a manifold across steps.
+/// What identifies a manifold across steps: the collider pair and which of its manifolds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub(crate) struct ContactKey {
     pub c1: ColliderHandle,
     pub c2: ColliderHandle,
-    /// Packed feature ids of the manifold's first point (and sub-shapes).
-    pub features: u64,
+    pub part: ManifoldPart,
+}
+
+/// Which manifold of a collider pair. Feature ids are not part of it: a manifold keeps its
+/// identity while its points come and go (a box tipping onto an edge, a cube sliding across
+/// a mesh's triangles).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub(crate) enum ManifoldPart {
+    /// The only manifold of two convex shapes.
+    Whole,
+    /// The manifold of one sub-shape pair of a composite shape (with contact clustering off).
+    Subshapes(u32, u32),
+    /// A contact patch of a composite shape: rapier clusters the per-sub-shape manifolds
+    /// whose normals agree within ~5° into one solver manifold, rebuilt every step, so the
+    /// patch is identified by its normal in collider 1's frame, on a grid of 0.02 per
+    /// component (two clusters' normals differ by at least 0.05 in some component).
+    Cluster([i8; 3]),
+}
+
+impl ManifoldPart {
+    /// The cluster cell of a unit normal.
+    pub fn cluster(normal: Vector) -> ManifoldPart {
+        let cell = |x: f32| (x.clamp(-1.0, 1.0) * 50.0).round() as i8;
+        ManifoldPart::Cluster([cell(normal.x), cell(normal.y), cell(normal.z)])
+    }
 }
 
 /// The state of one contact manifold, as the hook works on it.
@@ -54,6 +77,9 @@ pub(crate) struct ContactRecord {
     pub mean_normal_force: f32,
     /// Regime code (see `Regime`; `REGIME_RESET`), 255 until the law has run.
     pub regime: u8,
+    /// Steps left (0–2) in which the solver is still forming the contact after a solve
+    /// that started cold (see `contact_step`).
+    pub forming: u8,
 }
 
 impl Default for ContactRecord {
@@ -66,6 +92,7 @@ impl Default for ContactRecord {
             inner_user_data: 0,
             mean_normal_force: 0.0,
             regime: u8::MAX,
+            forming: 0,
         }
     }
 }
@@ -106,6 +133,10 @@ const LOCK: u16 = 1;
 const LIVE: u16 = 1 << 1;
 /// Parity of the step that last touched the record (the sweep runs every step).
 const TOUCHED: u16 = 1 << 2;
+/// Bit 0 of `ContactRecord::forming` (bit 1 is the sign bit of the stored slip speed, which
+/// is never negative).
+const FORMING: u16 = 1 << 3;
+const SLIP_FORMING: u16 = 1 << 15;
 /// The record has an entry in the key map.
 const KEYED: u16 = 1 << 7;
 const REGIME_SHIFT: u16 = 4;
@@ -217,10 +248,11 @@ fn unpack(p: &Packed, slip: u16, meta: u16) -> ContactRecord {
         force: Vector::from_array(p.force),
         slide: p.slide,
         limit: p.limit,
-        slip_speed: from_bf16(slip),
+        slip_speed: from_bf16(slip & !SLIP_FORMING),
         inner_user_data: 0,
         mean_normal_force: p.mean_normal_force,
         regime: unpack_regime(meta),
+        forming: u8::from(meta & FORMING != 0) | u8::from(slip & SLIP_FORMING != 0) << 1,
     }
 }
 
@@ -234,12 +266,13 @@ fn pack(r: &ContactRecord, c1: u32, c2: u32) -> (Packed, u16) {
             c1,
             c2,
         },
-        to_bf16(r.slip_speed),
+        (to_bf16(r.slip_speed) & !SLIP_FORMING) | if r.forming & 2 != 0 { SLIP_FORMING } else { 0 },
     )
 }
 
 fn with_state(meta: u16, r: &ContactRecord) -> u16 {
-    (meta & !REGIME_MASK) | pack_regime(r.regime)
+    let forming = if r.forming & 1 != 0 { FORMING } else { 0 };
+    (meta & !(REGIME_MASK | FORMING)) | pack_regime(r.regime) | forming
 }
 
 fn index_of(h: ColliderHandle) -> u32 {
@@ -617,7 +650,7 @@ impl ContactStore {
         // The map's order never matters; sorted, equal states give equal images.
         keys.sort_by_key(|(k, i)| {
             let raw = |h: ColliderHandle| h.0.into_raw_parts();
-            (raw(k.c1), raw(k.c2), k.features, *i)
+            (raw(k.c1), raw(k.c2), k.part, *i)
         });
         StoreImage {
             slots,
@@ -694,7 +727,7 @@ mod tests {
         ContactKey {
             c1: ColliderHandle::from_raw_parts(a, 0),
             c2: ColliderHandle::from_raw_parts(b, 0),
-            features: 0,
+            part: ManifoldPart::Whole,
         }
     }
 
@@ -713,12 +746,19 @@ mod tests {
             inner_user_data: 0,
             mean_normal_force: 9.81,
             regime: 2,
+            forming: 0,
         };
         for regime in [0, 1, 2, u8::MAX, REGIME_RESET] {
-            let rec = ContactRecord { regime, ..rec };
-            let (p, slip) = pack(&rec, 3, 4);
-            let meta = with_state(LIVE, &rec);
-            assert_eq!(unpack(&p, slip, meta), rec);
+            for forming in 0..=2 {
+                let rec = ContactRecord {
+                    regime,
+                    forming,
+                    ..rec
+                };
+                let (p, slip) = pack(&rec, 3, 4);
+                let meta = with_state(LIVE, &rec);
+                assert_eq!(unpack(&p, slip, meta), rec);
+            }
         }
         // The slip speed keeps 8 significant bits.
         let x = 0.123_456_f32;

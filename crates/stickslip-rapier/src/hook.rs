@@ -7,20 +7,45 @@
 //! one friction constraint per manifold, so stickslip keeps one friction state per manifold.
 
 use crate::contact_step::{ContactInput, step_contact};
-use crate::contact_store::{ContactKey, ContactRecord};
-use crate::measure::{centroid, measure, point_velocity};
+use crate::contact_store::{ContactKey, ContactRecord, ManifoldPart};
+use crate::measure::{Measured, centroid, measure, point_velocity};
 use crate::modifier::StickSlip;
 use crate::tangent::TangentBasis;
 use rapier3d::prelude::*;
 use std::sync::atomic::Ordering;
 
-fn key(c1: ColliderHandle, c2: ColliderHandle, m: &ContactManifold) -> ContactKey {
-    let features = m.points.first().map_or(0, |p| {
-        ((p.fid1.0 as u64) << 32 | p.fid2.0 as u64)
-            ^ ((m.subshape1 as u64) << 17)
-            ^ ((m.subshape2 as u64) << 47)
-    });
-    ContactKey { c1, c2, features }
+/// Whether a shape reaches the narrow phase as parts, each pair of parts with its own
+/// manifold.
+fn is_composite(shape: &dyn Shape) -> bool {
+    shape.as_composite_shape().is_some()
+        || matches!(
+            shape.shape_type(),
+            ShapeType::HeightField | ShapeType::Voxels
+        )
+}
+
+/// The key of a manifold (see [`ManifoldPart`]): two convex shapes have one manifold; a
+/// composite shape one per sub-shape pair, or, when rapier clusters them for the solver, one
+/// per contact normal — also while only one manifold is left, so the record survives the
+/// pair dropping to a single manifold and back.
+fn key(ctx: &ContactModificationContext, m: &ContactManifold, clustering: bool) -> ContactKey {
+    let (c1, c2) = (ctx.collider1, ctx.collider2);
+    let composite = |h| {
+        ctx.colliders
+            .get(h)
+            .is_some_and(|c| is_composite(c.shape()))
+    };
+    let part = if !(composite(c1) || composite(c2)) {
+        ManifoldPart::Whole
+    } else if clustering {
+        let n1 = m
+            .subshape_pos1()
+            .map_or(m.local_n1, |p| p.rotation * m.local_n1);
+        ManifoldPart::cluster(n1)
+    } else {
+        ManifoldPart::Subshapes(m.subshape1, m.subshape2)
+    };
+    ContactKey { c1, c2, part }
 }
 
 fn inv_mass(bodies: &RigidBodySet, h: Option<RigidBodyHandle>) -> f64 {
@@ -42,22 +67,22 @@ impl<H: PhysicsHooks> PhysicsHooks for StickSlip<H> {
     }
 
     fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
-        let (c1, c2) = (ctx.collider1, ctx.collider2);
         let Some(rigid) = ctx.rigid() else {
             self.inner.modify_solver_contacts(ctx);
             return;
         };
+        let manifold = rigid.manifold;
         // A manifold without solver contacts and without a record (a pair inside the
         // prediction distance, not touching) has nothing for the law: no record is made
         // unless the wrapped hook keeps a value in its user_data.
         if rigid.solver_contacts.is_empty() && *rigid.user_data == 0 {
             self.inner.modify_solver_contacts(ctx);
+            let key = key(ctx, manifold, self.clock.clustering);
             let Some(r) = ctx.rigid_mut() else { return };
             let inner_data = *r.user_data;
             if inner_data == 0 {
                 return;
             }
-            let key = key(c1, c2, r.manifold);
             let mut user_data = 0;
             self.store
                 .with_record(&mut user_data, &key, self.clock.mark(), |rec, _, ours| {
@@ -66,7 +91,8 @@ impl<H: PhysicsHooks> PhysicsHooks for StickSlip<H> {
                 });
             return;
         }
-        let key = key(c1, c2, rigid.manifold);
+        let key = key(ctx, manifold, self.clock.clustering);
+        let Some(rigid) = ctx.rigid() else { return };
         let mut user_data = *rigid.user_data;
         let step = self.clock.mark();
         // The manifold's user_data is ours; the inner hook sees its own value.
@@ -80,13 +106,28 @@ impl<H: PhysicsHooks> PhysicsHooks for StickSlip<H> {
                     rec.inner_user_data = *r.user_data;
                     *r.user_data = ours;
                 }
-                self.apply(ctx, rec);
+                let patch = matches!(key.part, ManifoldPart::Cluster(_));
+                self.apply(
+                    ctx,
+                    rec,
+                    patch.then(|| self.patches_measured.get(&ours)).flatten(),
+                );
+                if patch {
+                    crate::contact_store::lock(&self.patches_seen).push((key.c1, key.c2, ours));
+                }
             });
     }
 }
 
 impl<H: PhysicsHooks> StickSlip<H> {
-    fn apply(&self, ctx: &mut ContactModificationContext, rec: &mut ContactRecord) {
+    /// `measured`: the last solve at this manifold, if `end_step` measured it (a contact
+    /// patch of a composite shape); otherwise it is read from the manifold's points.
+    fn apply(
+        &self,
+        ctx: &mut ContactModificationContext,
+        rec: &mut ContactRecord,
+        measured: Option<&Measured>,
+    ) {
         let (c1, c2) = (ctx.collider1, ctx.collider2);
         let bodies = ctx.bodies;
         let (rb1, rb2) = (ctx.rigid_body1, ctx.rigid_body2);
@@ -114,7 +155,16 @@ impl<H: PhysicsHooks> StickSlip<H> {
         // ġ = v₂ − v₁ of the touching material points (relative to a moving surface).
         let slip = basis
             .project(point_velocity(bodies, rb2, p) - point_velocity(bodies, rb1, p) - surface);
-        let meas = measure(m.manifold, dt);
+        let from_points = measure(m.manifold, m.solver_contacts, dt);
+        // A patch measured after the last solve: what rapier carried over to the points it
+        // solves now is its warm start.
+        let (meas, warm_start) = match measured {
+            Some(last) if last.normal_force > 0.0 => {
+                (*last, from_points.normal_force / last.normal_force)
+            }
+            Some(last) => (*last, 1.0),
+            None => (from_points, 1.0),
+        };
         let out = step_contact(
             rec,
             &ContactInput {
@@ -129,6 +179,7 @@ impl<H: PhysicsHooks> StickSlip<H> {
                 time: self.clock.time,
                 inv_mass: inv_mass(bodies, rb1) + inv_mass(bodies, rb2),
                 stiffness_time: self.config.stiffness_time,
+                warm_start,
             },
         );
         *m.friction = rec.limit;

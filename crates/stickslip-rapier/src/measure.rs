@@ -4,6 +4,7 @@
 use rapier3d::prelude::*;
 
 /// Normal and friction measurement of a manifold from the last solve.
+#[derive(Debug, Clone, Copy)]
 pub(crate) struct Measured {
     /// Normal force over the step (N).
     pub normal_force: f64,
@@ -11,23 +12,29 @@ pub(crate) struct Measured {
     pub mu: Vector,
 }
 
-pub(crate) fn measure(m: &ContactManifold, dt: f64) -> Measured {
+/// Measures a manifold from the points its solver contacts stand for: before the solve
+/// (inside the hook) they carry the last solve's impulses, carried over by rapier (by feature
+/// id, or by position into a cluster); after the solve, this solve's. Points the solver did not
+/// use may hold stale impulses and are skipped. Friction is one constraint per manifold
+/// (`FrictionModel::Simplified`), whose impulse rapier stores on each of its points.
+pub(crate) fn measure(m: &ContactManifold, contacts: &[SolverContact], dt: f64) -> Measured {
     let (mut impulse, mut warm) = (0.0f64, 0.0f64);
-    let mut friction = Vector::ZERO;
-    for (i, p) in m.points.iter().enumerate() {
+    let mut friction = None;
+    for c in contacts {
+        let Some(p) = m.points.get(c.contact_indices()[0] as usize) else {
+            continue;
+        };
         impulse += p.data.impulse as f64;
         warm += p.data.warmstart_impulse as f64;
-        // One friction constraint per group of 4 points stores its impulse on each point.
-        if i % 4 == 0 {
-            friction += p.data.warmstart_tangent_world;
+        if friction.is_none() && p.data.warmstart_impulse != 0.0 {
+            friction = Some(p.data.warmstart_tangent_world);
         }
     }
     Measured {
         normal_force: if dt > 0.0 { impulse / dt } else { 0.0 },
-        mu: if warm > 0.0 {
-            friction / warm as f32
-        } else {
-            Vector::ZERO
+        mu: match friction {
+            Some(f) if warm > 0.0 => f / warm as f32,
+            _ => Vector::ZERO,
         },
     }
 }

@@ -3,10 +3,12 @@
 use crate::collider_map::{ColliderBits, ColliderMap};
 use crate::contact_store::ContactStore;
 use crate::material::FrictionMaterial;
+use crate::measure::{Measured, measure};
 use crate::report::{ContactReport, WorldTotals};
 use crate::vibration::VibrationSource;
 use rapier3d::prelude::*;
 use serde::{Deserialize, Serialize};
+use std::collections::HashMap;
 use std::sync::atomic::{AtomicBool, Ordering};
 use stickslip_core::ParamError;
 use stickslip_core::error::positive;
@@ -60,6 +62,10 @@ pub(crate) struct Clock {
     pub time: f64,
     pub dt: f64,
     pub step: u32,
+    /// Whether rapier clusters a composite pair's manifolds for the solver this step
+    /// (`IntegrationParameters::contact_clustering`): then a composite pair's records are
+    /// keyed by contact patch, not by sub-shape pair.
+    pub clustering: bool,
     /// Sweeps of the contact store so far; the hook marks the records it touches with the
     /// next sweep's number.
     pub sweeps: u32,
@@ -139,6 +145,13 @@ pub struct StickSlip<H = ()> {
     pub(crate) read_back: ReadBack,
     pub(crate) reports: Vec<ContactReport>,
     pub(crate) totals: WorldTotals,
+    /// Contact patches of composite shapes the hook saw this step (pair and our `user_data`):
+    /// rapier rebuilds a clustered manifold every step and carries its impulses over by
+    /// nearest position, stale points' included, so the next hook cannot read the last solve
+    /// from it; `end_step` measures these right after the solve instead.
+    pub(crate) patches_seen: std::sync::Mutex<Vec<(ColliderHandle, ColliderHandle, u32)>>,
+    /// What `end_step` measured for those patches, by `user_data`.
+    pub(crate) patches_measured: HashMap<u32, Measured>,
 }
 
 impl StickSlip<()> {
@@ -164,6 +177,8 @@ impl<H: PhysicsHooks> StickSlip<H> {
             read_back: ReadBack::Off,
             reports: Vec::new(),
             totals: WorldTotals::default(),
+            patches_seen: Default::default(),
+            patches_measured: HashMap::new(),
         }
     }
 
@@ -319,6 +334,7 @@ impl<H: PhysicsHooks> StickSlip<H> {
         let dt = params.dt as f64;
         self.clock.dt = if valid_dt(dt) { dt } else { 0.0 };
         self.clock.step = self.clock.step.wrapping_add(1);
+        self.clock.clustering = params.contact_clustering;
         *self.moving_surfaces.get_mut() = false;
     }
 
@@ -334,6 +350,7 @@ impl<H: PhysicsHooks> StickSlip<H> {
     ) {
         let dt = self.clock.dt;
         self.clock.time += dt;
+        self.measure_patches(narrow_phase, dt);
         let read_back = self.read_back;
         let mark = self.clock.mark();
         if read_back == ReadBack::Off {
@@ -393,6 +410,31 @@ impl<H: PhysicsHooks> StickSlip<H> {
         self.clock.sweeps = mark;
         totals.dissipated_energy += totals.dissipated_power * dt;
         self.totals = totals;
+    }
+
+    /// Measures the contact patches of composite shapes the hook saw, right after the solve.
+    fn measure_patches(&mut self, narrow_phase: &NarrowPhase, dt: f64) {
+        let seen = self
+            .patches_seen
+            .get_mut()
+            .unwrap_or_else(|e| e.into_inner());
+        self.patches_measured.clear();
+        for (c1, c2, user_data) in seen.drain(..) {
+            let Some(pair) = narrow_phase.contact_pair(c1, c2) else {
+                continue;
+            };
+            if let Some(m) = pair
+                .solver_manifolds()
+                .iter()
+                .find(|m| m.data.user_data == user_data)
+            {
+                self.patches_measured
+                    .insert(user_data, measure(m, &m.data.solver_contacts, dt));
+            }
+        }
+        if self.patches_measured.capacity() > 4 * self.patches_measured.len() + 64 {
+            self.patches_measured.shrink_to_fit();
+        }
     }
 
     /// One step of `world` with this modifier (and no event handler of yours: pass one with

@@ -24,7 +24,7 @@ pub(crate) fn report(
     let Some((p, targets)) = world_centroid(m, colliders, (c1, c2)) else {
         return reset_report(rec, c1, c2);
     };
-    // The target velocities hold stickslip's own (anchor correction, Regul's creep,
+    // The target velocities hold stickslip's own (Regul's creep,
     // vibration drive) besides a wrapped hook's surface velocity; without such a hook they
     // are not a surface's motion at all.
     let surface = if moving_surfaces {
@@ -32,7 +32,7 @@ pub(crate) fn report(
     } else {
         Vector::ZERO
     };
-    let meas = measure(m, dt);
+    let meas = measure(m, &m.data.solver_contacts, dt);
     let n = m.data.normal;
     let basis = TangentBasis::new(n);
     let slip = basis.tangential(

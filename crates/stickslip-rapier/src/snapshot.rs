@@ -63,7 +63,8 @@
 
 use crate::collider_map::{ColliderBits, ColliderMap};
 use crate::contact_store::{
-    ContactKey, ContactRecord, ContactStore, INDEX_BITS, LiveImage, SlotImage, StoreImage,
+    ContactKey, ContactRecord, ContactStore, INDEX_BITS, LiveImage, ManifoldPart, SlotImage,
+    StoreImage,
 };
 use crate::material::FrictionMaterial;
 use crate::modifier::{Clock, ReadBack, StickSlip, StickSlipConfig};
@@ -79,7 +80,7 @@ use stickslip_core::law::Regime;
 use stickslip_core::waveform::Waveform;
 
 /// Version of the snapshot format written by this build (and the only one it reads).
-pub const FORMAT_VERSION: u32 = 3;
+pub const FORMAT_VERSION: u32 = 4;
 
 const MAGIC: [u8; 8] = *b"STKSLIP\0";
 /// Header kind of a [`StickSlipSnapshot`] file.
@@ -292,6 +293,8 @@ struct RecordSnapshot {
     /// Parity of the step that last touched it.
     touched_odd: bool,
     regime: u8,
+    /// Steps left in which the contact is still forming (0–2).
+    forming: u8,
 }
 
 impl From<&LiveImage> for RecordSnapshot {
@@ -308,6 +311,7 @@ impl From<&LiveImage> for RecordSnapshot {
             mean_normal_force: r.mean_normal_force,
             touched_odd: l.touched_odd,
             regime: r.regime,
+            forming: r.forming,
         }
     }
 }
@@ -333,6 +337,12 @@ impl RecordSnapshot {
                 "negative friction limit, slip speed or mean normal force",
             ));
         }
+        if self.forming > 2 {
+            return Err(invalid(
+                "contact state",
+                format!("forming for {} steps (at most 2)", self.forming),
+            ));
+        }
         if !matches!(
             self.regime,
             0..=2 | crate::contact_store::REGIME_RESET | u8::MAX
@@ -354,6 +364,7 @@ impl RecordSnapshot {
                 inner_user_data: self.inner_user_data,
                 mean_normal_force: self.mean_normal_force,
                 regime: self.regime,
+                forming: self.forming,
             },
         })
     }
@@ -367,13 +378,41 @@ struct SlotSnapshot {
     record: Option<RecordSnapshot>,
 }
 
-/// An entry of the store's key map (collider pair and features → slot).
+/// An entry of the store's key map (collider pair and which manifold → slot).
 #[derive(Debug, Clone, Serialize, Deserialize)]
 struct KeySnapshot {
     c1: Handle,
     c2: Handle,
-    features: u64,
+    part: PartSnapshot,
     slot: u32,
+}
+
+/// Which manifold of a pair (`contact_store::ManifoldPart`).
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+enum PartSnapshot {
+    Whole,
+    Subshapes(u32, u32),
+    Cluster([i8; 3]),
+}
+
+impl From<ManifoldPart> for PartSnapshot {
+    fn from(p: ManifoldPart) -> Self {
+        match p {
+            ManifoldPart::Whole => PartSnapshot::Whole,
+            ManifoldPart::Subshapes(a, b) => PartSnapshot::Subshapes(a, b),
+            ManifoldPart::Cluster(n) => PartSnapshot::Cluster(n),
+        }
+    }
+}
+
+impl From<PartSnapshot> for ManifoldPart {
+    fn from(p: PartSnapshot) -> Self {
+        match p {
+            PartSnapshot::Whole => ManifoldPart::Whole,
+            PartSnapshot::Subshapes(a, b) => ManifoldPart::Subshapes(a, b),
+            PartSnapshot::Cluster(n) => ManifoldPart::Cluster(n),
+        }
+    }
 }
 
 /// The contact store, exactly: slots in order (free ones are taken lowest first), the key
@@ -403,7 +442,7 @@ impl From<&ContactStore> for ContactsSnapshot {
                 .map(|(k, slot)| KeySnapshot {
                     c1: k.c1.into(),
                     c2: k.c2.into(),
-                    features: k.features,
+                    part: k.part.into(),
                     slot: *slot,
                 })
                 .collect(),
@@ -436,7 +475,7 @@ impl ContactsSnapshot {
                         ContactKey {
                             c1: k.c1.into(),
                             c2: k.c2.into(),
-                            features: k.features,
+                            part: k.part.into(),
                         },
                         k.slot,
                     )
@@ -743,6 +782,8 @@ impl<H> StickSlip<H> {
                 time: c.time,
                 dt: c.dt,
                 step: c.step,
+                // Set from the integration parameters by every begin_step.
+                clustering: true,
                 sweeps: c.sweeps,
             },
             inner,
@@ -751,6 +792,10 @@ impl<H> StickSlip<H> {
             read_back: s.read_back,
             reports,
             totals,
+            // Not part of a snapshot: a restored composite-shape patch reads its first step
+            // from the manifold's points.
+            patches_seen: Default::default(),
+            patches_measured: Default::default(),
         })
     }
 }

@@ -583,10 +583,16 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
 
     /// The band's lower edge and the regime of a state after a step at level `m`. A state
     /// whose switch is fully on up to round-off (α ≥ 1 − 1e-6, which a state tracking a
-    /// curve equal to U approaches only asymptotically) counts as sliding.
+    /// curve equal to U approaches only asymptotically) counts as sliding; a state put onto
+    /// the band's lower edge counts as on it, as in the step (else a slide at μ_ba = μ_max,
+    /// whose state is renormalized onto |μ| = L every step, reads sticking whenever round-off
+    /// leaves it one ulp inside).
     fn classify(&self, mu: Vec2, sigma: f64, m: f64) -> (f64, Regime) {
         let (lo, hi) = self.band(sigma, m);
-        let mag = norm(mu);
+        let mut mag = norm(mu);
+        if mag >= lo * (1.0 - 1e-12) {
+            mag = mag.max(lo);
+        }
         let r = match regime(mag, lo, hi) {
             Regime::StickSlip if alpha(mag, lo, hi) >= 1.0 - 1e-6 => Regime::Sliding,
             r => r,
