@@ -35,6 +35,14 @@
 //! ġ = 0 at the contact, so neither the state nor the solver's target changes, and a stack
 //! at rest stays at rest as under plain rapier.
 //!
+//! **Contact forming.** For the two steps after a solve that started cold — a new contact or a
+//! landing (no warm start), or a clustered mesh patch whose points rapier re-picked while the
+//! contact held (warm-started with < 90 % of the last normal impulse) — the contact holds at
+//! its capacity whatever the solver did: that solve built the normal force up while friction
+//! was capped by the part built so far, and the next stops the slip that let through. Plain
+//! rapier lets a box put down on a slope slip 10–100 µm there; an EP law with g_ba of a few
+//! µm would take it for break-away and, with μ_k < μ_s, slide off (`tests/ordinary_grounds.rs`).
+//!
 //! **Tried and dropped** (measured in `tests/ordinary_*.rs`): stick anchors — material points
 //! fixed in each collider at the moment a contact stuck, their separation corrected through
 //! the target velocity. A rolling body's material points leave the contact (after a quarter
