@@ -2,7 +2,8 @@
 //!
 //! Measures, for each scene of `benches/common` (boxes on a plane at ≈1k and ≈10k contact
 //! points, a 4-high pile at ≈10k, a 250-contact chain driven at 50 Hz, a vibratory trough with
-//! 480 parts; a plane at ≈100k points with `STICKSLIP_BENCH_FULL=1`):
+//! 480 parts, 3 × 3 plank towers of 432 planks, 400 rolling balls; a plane at ≈100k points with
+//! `STICKSLIP_BENCH_FULL=1`):
 //! - criterion (thread CPU time, see [`ThreadCpu`]): one `PhysicsWorld` step with plain rapier (`FrictionModel::Simplified`
 //!   and `::Coulomb`), a no-op contact hook, and stickslip with EP, Regul, Phys, and EP with a
 //!   time-resolved and an averaged vibration source;
@@ -172,6 +173,14 @@ fn scenes(mode: Mode) -> Vec<(Scene, &'static [Variant])> {
         ),
         (Scene::Chain { links: 250 }, &Variant::ALL),
         (Scene::Trough { parts: 480 }, &Variant::ALL),
+        (
+            Scene::Towers {
+                grid: 3,
+                layers: 12,
+            },
+            &Variant::ALL,
+        ),
+        (Scene::Rolling { balls: 400 }, &Variant::ALL),
     ];
     if mode == Mode::Full {
         v.push((Scene::plane_for_points(100_000), SCALING));

@@ -9,7 +9,12 @@
 //! - `chain`: a row of 250 boxes (0.1 m, 1 kg) on the ground coupled by spring joints, driven at
 //!   one end by a kinematic body oscillating at 50 Hz (2 cm), dt = 1/1000 s;
 //! - `trough`: a kinematic vibratory trough (25 Hz, 1.5 mm along a 25° throw direction,
-//!   machine number ≈ 1.6, parts hop) carrying 480 small parts, dt = 1/500 s.
+//!   machine number ≈ 1.6, parts hop) carrying 480 small parts, dt = 1/500 s;
+//! - `towers_<n>`: plank towers, the stacking demo of every engine: a 3 × 3 grid of towers of
+//!   12 crossed layers of four 1.6 m planks (the tower of `scenes::ordinary::stack`, tall
+//!   enough to stand still in plain rapier), n planks, dt = 1/60 s;
+//! - `rolling_<n>`: n balls (r 0.1 m) rolling without slipping across a fixed ground at 1 m/s,
+//!   dt = 1/60 s.
 #![allow(dead_code)]
 
 use rapier3d::prelude::*;
@@ -40,6 +45,10 @@ pub enum Scene {
     Chain { links: usize },
     /// A vibrating trough with `parts` parts.
     Trough { parts: usize },
+    /// A grid of `grid` × `grid` plank towers of `layers` crossed layers of four planks.
+    Towers { grid: usize, layers: usize },
+    /// `balls` balls rolling across the ground.
+    Rolling { balls: usize },
 }
 
 impl Scene {
@@ -57,6 +66,8 @@ impl Scene {
             Scene::Pile { stacks, height } => format!("pile_{}", stacks * height * 4),
             Scene::Chain { links } => format!("chain_{links}"),
             Scene::Trough { parts } => format!("trough_{parts}"),
+            Scene::Towers { grid, layers } => format!("towers_{}", grid * grid * layers * 4),
+            Scene::Rolling { balls } => format!("rolling_{balls}"),
         }
     }
 
@@ -73,13 +84,22 @@ impl Scene {
             Scene::Trough { parts } => {
                 format!("vibratory trough (25 Hz, 1.5 mm) carrying {parts} parts, dt 1/500 s")
             }
+            Scene::Towers { grid, layers } => format!(
+                "{grid} x {grid} plank towers of {layers} crossed layers of 4 planks, dt 1/60 s"
+            ),
+            Scene::Rolling { balls } => {
+                format!("{balls} balls rolling across a plane at 1 m/s, dt 1/60 s")
+            }
         }
     }
 
     /// Time step (s).
     pub fn dt(&self) -> f32 {
         match self {
-            Scene::Plane { .. } | Scene::Pile { .. } => 1.0 / 60.0,
+            Scene::Plane { .. }
+            | Scene::Pile { .. }
+            | Scene::Towers { .. }
+            | Scene::Rolling { .. } => 1.0 / 60.0,
             Scene::Chain { .. } => 1.0 / 1000.0,
             Scene::Trough { .. } => 1.0 / 500.0,
         }
@@ -88,7 +108,10 @@ impl Scene {
     /// Frequency of the time-resolved vibration source (resolved by ≥ 10 steps a period).
     pub fn resolved_frequency(&self) -> f64 {
         match self {
-            Scene::Plane { .. } | Scene::Pile { .. } => 5.0,
+            Scene::Plane { .. }
+            | Scene::Pile { .. }
+            | Scene::Towers { .. }
+            | Scene::Rolling { .. } => 5.0,
             Scene::Chain { .. } => 100.0,
             Scene::Trough { .. } => 50.0,
         }
@@ -97,7 +120,10 @@ impl Scene {
     /// Steps to settle before measuring.
     pub fn settle_steps(&self) -> usize {
         match self {
-            Scene::Plane { .. } | Scene::Pile { .. } => 60,
+            Scene::Plane { .. }
+            | Scene::Pile { .. }
+            | Scene::Towers { .. }
+            | Scene::Rolling { .. } => 60,
             Scene::Chain { .. } => 200,
             Scene::Trough { .. } => 250,
         }
@@ -235,10 +261,6 @@ impl Bench {
     /// Builds `scene` for `variant` (not yet settled).
     pub fn new(scene: Scene, variant: Variant) -> Bench {
         let mut world = PhysicsWorld::default();
-        world.integration_parameters.dt = scene.dt();
-        if variant == Variant::PlainCoulomb {
-            world.integration_parameters.friction_model = FrictionModel::Coulomb;
-        }
         let mut hooked = Vec::new();
         let mut driver = None;
         let vib_host;
@@ -364,6 +386,79 @@ impl Bench {
                     frequency: 25.0,
                 });
             }
+            Scene::Towers { grid, layers } => {
+                let ground = world.insert_collider(
+                    ColliderBuilder::cuboid(20.0, 0.1, 20.0)
+                        .translation(Vector::new(0.0, -0.1, 0.0))
+                        .friction(MU),
+                    None,
+                );
+                hooked.push(ground);
+                vib_host = ground;
+                // The tower of `scenes::ordinary::stack(Stack::Tower, ..)`, 2.5 m apart.
+                let (long, thick, wide) = (0.8f32, 0.05f32, 0.1f32);
+                for t in 0..grid * grid {
+                    let centre = Vector::new(
+                        ((t % grid) as f32 - (grid - 1) as f32 / 2.0) * 2.5,
+                        0.0,
+                        ((t / grid) as f32 - (grid - 1) as f32 / 2.0) * 2.5,
+                    );
+                    for layer in 0..layers {
+                        let y = thick + layer as f32 * 2.0 * thick;
+                        for i in 0..4 {
+                            let across = (i as f32 - 1.5) * 0.4;
+                            let (at, half) = if layer % 2 == 0 {
+                                (Vector::new(0.0, y, across), Vector::new(long, thick, wide))
+                            } else {
+                                (Vector::new(across, y, 0.0), Vector::new(wide, thick, long))
+                            };
+                            let (_, c) = world.insert(
+                                RigidBodyBuilder::dynamic()
+                                    .translation(centre + at)
+                                    .can_sleep(false),
+                                ColliderBuilder::cuboid(half.x, half.y, half.z)
+                                    .density(500.0)
+                                    .friction(MU),
+                            );
+                            hooked.push(c);
+                        }
+                    }
+                }
+            }
+            Scene::Rolling { balls } => {
+                let r = 0.1f32;
+                let side = (balls as f64).sqrt().ceil() as usize;
+                let gap = 0.5f32;
+                let extent = side as f32 * gap + 40.0;
+                let ground = world.insert_collider(
+                    ColliderBuilder::cuboid(extent, 0.1, extent).friction(MU),
+                    None,
+                );
+                hooked.push(ground);
+                vib_host = ground;
+                for k in 0..balls {
+                    let (i, j) = ((k % side) as f32, (k / side) as f32);
+                    let at = Vector::new(
+                        (i - side as f32 * 0.5) * gap,
+                        0.1 + r,
+                        (j - side as f32 * 0.5) * gap,
+                    );
+                    // Rolling without slipping along +x: v = ω × r.
+                    let (_, c) = world.insert(
+                        RigidBodyBuilder::dynamic()
+                            .translation(at)
+                            .linvel(Vector::new(1.0, 0.0, 0.0))
+                            .angvel(Vector::new(0.0, 0.0, -1.0 / r))
+                            .can_sleep(false),
+                        ColliderBuilder::ball(r).density(1000.0).friction(MU),
+                    );
+                    hooked.push(c);
+                }
+            }
+        }
+        world.integration_parameters.dt = scene.dt();
+        if variant == Variant::PlainCoulomb {
+            world.integration_parameters.friction_model = FrictionModel::Coulomb;
         }
         let stepper = match variant {
             Variant::PlainSimplified | Variant::PlainCoulomb => Stepper::Plain,

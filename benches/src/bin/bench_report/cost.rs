@@ -10,6 +10,8 @@ use std::path::Path;
 /// Target: stickslip step time over the no-op hook on the same colliders (the floor of any
 /// contact modifier), every scene.
 const TIME_TARGET: f64 = 1.05;
+/// Target in the plank towers (every contact a holding stack contact).
+const STACK_TIME_TARGET: f64 = 1.15;
 /// The variants that carry the step-time target (EP, and EP with vibration in either mode).
 const TIMED_VARIANTS: [&str; 3] = ["ep", "ep_vib_resolved", "ep_vib_averaged"];
 /// Target: spread of the cost per contact from 1k to 100k contacts.
@@ -271,11 +273,18 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
     // Targets: step time over the floor.
     for (what, r) in &worst_time {
         if what.ends_with(" ep") {
+            let scene = what.trim_end_matches(" ep");
+            // Stacks: issue 20's target (a tower's contacts all hold, each a law step).
+            let target = if scene.starts_with("towers_") {
+                STACK_TIME_TARGET
+            } else {
+                TIME_TARGET
+            };
             summary.add(
-                format!("step time, EP, `{}`", what.trim_end_matches(" ep")),
-                "≤ 1.05× no-op hook",
+                format!("step time, EP, `{scene}`"),
+                &format!("≤ {target}× no-op hook"),
                 ratio(*r),
-                *r <= TIME_TARGET,
+                *r <= target,
             );
         }
     }
