@@ -26,6 +26,7 @@ fn run(law: Option<&Law>, tan_theta: f64) -> f64 {
     let mut modifier = law.map(|l| {
         let mut m = StickSlip::new(FrictionMaterial::new(l.clone()));
         m.attach(&mut scene.world.colliders, scene.ground, None);
+        m.attach(&mut scene.world.colliders, scene.box_collider, None);
         m
     });
     if modifier.is_none() {

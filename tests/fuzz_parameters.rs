@@ -162,7 +162,7 @@ proptest! {
                 "step {step}: body state {:?} {:?} with {law:?}, {vibration:?}",
                 b.translation(), b.linvel()
             );
-            for r in m.reports() {
+            for r in m.reports().unwrap() {
                 let values = [r.mu, r.limit, r.normal_force, r.dissipated_power];
                 prop_assert!(
                     values.iter().all(|x| x.is_finite())
@@ -171,7 +171,7 @@ proptest! {
                     "step {step}: report {r:?} with {law:?}, {vibration:?}"
                 );
             }
-            let t = m.totals();
+            let t = m.totals().unwrap();
             prop_assert!(
                 t.dissipated_power.is_finite() && t.dissipated_energy.is_finite(),
                 "step {step}: totals {t:?} with {law:?}, {vibration:?}"

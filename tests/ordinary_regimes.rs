@@ -27,7 +27,7 @@ fn off_steps(ground: Ground, tan: f64, mu: f64, dt: f64, f: &Friction, expect: R
     let mut off = 0;
     for _ in 0..n {
         run.step();
-        let reports = run.modifier.as_ref().unwrap().reports();
+        let reports = run.modifier.as_ref().unwrap().reports().unwrap();
         assert!(!reports.is_empty(), "no contact reported");
         if reports.iter().any(|r| r.regime != expect) {
             off += 1;

@@ -38,6 +38,7 @@ fn slip_marks(law: Law, seconds: f64) -> Vec<f64> {
     };
     let mut modifier = StickSlip::with_hooks(FrictionMaterial::new(law), conveyor);
     modifier.attach(&mut scene.world.colliders, scene.ground, None);
+    modifier.attach(&mut scene.world.colliders, scene.box_collider, None);
     let mut marks = Vec::new();
     let mut v_prev = scene.vx();
     for k in 0..(seconds / dt) as usize {

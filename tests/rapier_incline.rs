@@ -38,7 +38,11 @@ fn creep(law: Option<Law>, theta: f64, mu: f32) -> (f64, Option<(f64, f64)>) {
     let mut modifier = law.map(|l| {
         let mut m = StickSlip::new(FrictionMaterial::new(l))
             .with_read_back(stickslip::rapier::ReadBack::Contacts);
-        m.attach(&mut world.colliders, ground, None);
+        // Every collider: the pairs are the law's alone.
+        let all: Vec<ColliderHandle> = world.colliders.iter().map(|(h, _)| h).collect();
+        for h in all {
+            m.attach(&mut world.colliders, h, None);
+        }
         m
     });
     let x_of =
@@ -54,9 +58,12 @@ fn creep(law: Option<Law>, theta: f64, mu: f32) -> (f64, Option<(f64, f64)>) {
     for _ in 0..DT_STEPS {
         step(&mut world);
     }
-    let state = modifier
-        .as_ref()
-        .and_then(|m| m.reports().first().map(|r| (r.mu, r.effective_mu())));
+    let state = modifier.as_ref().and_then(|m| {
+        m.reports()
+            .unwrap()
+            .first()
+            .map(|r| (r.mu, r.effective_mu()))
+    });
     (x_of(&world, body) - x0, state)
 }
 
@@ -115,6 +122,7 @@ fn slides_above_break_away_with_kinetic_acceleration() {
         let mut m = StickSlip::new(FrictionMaterial::new(law.clone()))
             .with_read_back(stickslip::rapier::ReadBack::Contacts);
         m.attach(&mut scene.world.colliders, scene.ground, None);
+        m.attach(&mut scene.world.colliders, scene.box_collider, None);
         // Let the contact form, then measure x(t) over 1 s of sliding.
         for _ in 0..10 {
             m.step(&mut scene.world);

@@ -51,6 +51,7 @@ fn scene(dt: f32, mass: f32) -> Scene {
     let law = Law::elasto_plastic(C, MU0, MU0, Curve::constant(MU0).unwrap()).unwrap();
     let mut modifier = StickSlip::new(FrictionMaterial::new(law));
     modifier.attach(&mut world.colliders, box_scene.ground, None);
+    modifier.attach(&mut world.colliders, box_scene.box_collider, None);
     Scene {
         world,
         modifier,

@@ -54,6 +54,7 @@ fn resting_boxes_report_their_patch_centroid_in_world_space() {
     for (&c, &(x, z, _)) in boxes.iter().zip(&spots) {
         let r = m
             .reports()
+            .unwrap()
             .iter()
             .find(|r| {
                 (r.collider1, r.collider2) == (ground, c)
@@ -68,6 +69,7 @@ fn resting_boxes_report_their_patch_centroid_in_world_space() {
     }
     let r = m
         .reports()
+        .unwrap()
         .iter()
         .find(|r| (r.collider1 == top) != (r.collider2 == top) && r.collider1 != ground)
         .expect("a report for the stacked box");
@@ -102,7 +104,7 @@ fn a_sliding_box_reports_its_velocity_as_slip() {
         for _ in 0..5 {
             m.step(&mut world);
             let b = &world.bodies[body];
-            let r = m.reports()[0];
+            let r = m.reports().unwrap()[0];
             // v + ω × (p − c) at the reported point, in the ground's tangent plane.
             let arm = Vector::from_array(r.point) - b.center_of_mass();
             let v = b.linvel() + b.angvel().cross(arm);
@@ -142,7 +144,7 @@ fn a_box_carried_by_a_conveyor_reports_no_slip_against_the_belt() {
     // velocity minus the surface's.
     let v = world.bodies[body].linvel();
     assert!((v - speed).length() < 1e-3, "carried at {v:?}");
-    let r = m.reports()[0];
+    let r = m.reports().unwrap()[0];
     let slip = Vector::from_array(r.slip_velocity).length();
     assert!(slip < 1e-3, "slip against the belt {:?}", r.slip_velocity);
 }

@@ -193,11 +193,11 @@ fn state(world: &PhysicsWorld, bodies: &[RigidBodyHandle], m: &Modifier) -> Vec<
         out.extend(p.rotation.to_array().map(|x| x.to_bits() as u64));
         out.push(b.is_sleeping() as u64);
     }
-    out.push(m.reports().len() as u64);
-    for r in m.reports() {
+    out.push(m.reports().unwrap().len() as u64);
+    for r in m.reports().unwrap() {
         out.extend(report_bits(r));
     }
-    out.extend(totals_bits(&m.totals()));
+    out.extend(totals_bits(&m.totals().unwrap()));
     out.push(m.time().to_bits());
     out
 }
@@ -322,8 +322,8 @@ fn run_case(kind: Kind, mode: VibrationMode) {
             "{kind:?} {mode:?}: file restore differs at step {k}"
         );
         diverged |= want != state(&w_lost, &s.bodies, &lost);
-        min_reports = min_reports.min(m.reports().len());
-        max_reports = max_reports.max(m.reports().len());
+        min_reports = min_reports.min(m.reports().unwrap().len());
+        max_reports = max_reports.max(m.reports().unwrap().len());
     }
     let fell = on_ground_at_snapshot - on_ground(&s.world);
     assert!(
@@ -341,7 +341,7 @@ fn run_case(kind: Kind, mode: VibrationMode) {
     );
     assert!(m.state_capacity() >= capacity_before);
     assert_eq!(m.active_contacts(), m_file.active_contacts());
-    assert!(m.totals().dissipated_energy > 0.0);
+    assert!(m.totals().unwrap().dissipated_energy > 0.0);
     eprintln!(
         "{kind:?} {mode:?}: {contacts_at_snapshot} contacts at the snapshot ({} bytes), \
          {min_reports}..{max_reports} reported after, {fell} boxes fell, identical over {AFTER} steps",
@@ -718,10 +718,10 @@ fn hundreds_of_contacts_resume_bit_identically() {
             }
             out.extend(p.rotation.to_array().map(|x| x.to_bits() as u64));
         }
-        for r in m.reports() {
+        for r in m.reports().unwrap() {
             out.extend(report_bits(r));
         }
-        out.extend(totals_bits(&m.totals()));
+        out.extend(totals_bits(&m.totals().unwrap()));
         out
     };
     for k in 0..200 {
@@ -739,6 +739,7 @@ fn hundreds_of_contacts_resume_bit_identically() {
     let capacity = m.state_capacity();
     let pairs = |m: &StickSlip<ThreadsSeen>| {
         m.reports()
+            .unwrap()
             .iter()
             .map(|r| (r.collider1, r.collider2))
             .collect::<std::collections::HashSet<_>>()
@@ -752,8 +753,8 @@ fn hundreds_of_contacts_resume_bit_identically() {
         m.step(&mut world);
         m2.step(&mut w2);
         assert!(bits(&world, &m) == bits(&w2, &m2), "differs at step {k}");
-        lo = lo.min(m.reports().len());
-        hi = hi.max(m.reports().len());
+        lo = lo.min(m.reports().unwrap().len());
+        hi = hi.max(m.reports().unwrap().len());
         new_pairs.extend(pairs(&m).difference(&before).copied());
     }
     // Contacts come and go after the restore, and pairs the snapshot never saw take state.

@@ -91,7 +91,7 @@ pub(crate) fn read_back(
     let out = &mut *out;
     out.contacts.clear();
     let mut now = HashMap::with_capacity(out.last.len());
-    for r in w.friction.reports() {
+    for r in w.friction.reports().unwrap_or_default() {
         let (Some(e1), Some(e2)) = (
             w.collider_entity(r.collider1),
             w.collider_entity(r.collider2),
@@ -120,6 +120,6 @@ pub(crate) fn read_back(
         }
     }
     out.last = now;
-    out.totals = w.friction.totals();
+    out.totals = w.friction.totals().unwrap_or_default();
     out.time = w.friction.time();
 }

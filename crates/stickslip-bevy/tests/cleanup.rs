@@ -70,7 +70,7 @@ fn despawn_and_removal_leave_nothing_behind() {
     assert!(app.world().get::<RapierCollider>(b).is_none());
     assert_eq!(state_count(&mut app), 0);
     let w = app.world().resource::<StickSlipWorld>();
-    assert!(w.friction.reports().is_empty());
+    assert!(w.friction.reports().unwrap().is_empty());
     assert_eq!(w.counts(), (2, 1));
     steps(&mut app, 1);
     assert!(app.world().resource::<ContactReports>().contacts.is_empty());

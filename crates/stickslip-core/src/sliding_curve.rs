@@ -70,6 +70,14 @@ pub enum Curve {
         /// Coefficients at those speeds, all > 0.
         mus: Vec<f64>,
     },
+    /// Two curves combined point by point by a rule: the curve of a pair of surfaces (see
+    /// [`Curve::combine`]).
+    Combined {
+        /// How the two values combine.
+        rule: crate::law::CombineRule,
+        /// The two surfaces' curves.
+        curves: Box<[Curve; 2]>,
+    },
 }
 
 impl Curve {
@@ -139,6 +147,12 @@ impl Curve {
                 viscous,
             } => Curve::stribeck(*mu_s, *mu_k, *v_s, *decay, *viscous).map(drop),
             Curve::Table { speeds, mus } => Curve::table(speeds.clone(), mus.clone()).map(drop),
+            Curve::Combined { curves, .. } => {
+                curves[0].validate()?;
+                curves[1].validate()?;
+                coefficient("combined mu_ve(0+)", self.at_rest())?;
+                Ok(())
+            }
         }
     }
 }
@@ -175,6 +189,7 @@ impl SlidingCurve for Curve {
                     }
                 }
             }
+            Curve::Combined { rule, curves } => rule.apply(curves[0].mu(v), curves[1].mu(v)),
         }
     }
 }

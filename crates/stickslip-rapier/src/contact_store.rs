@@ -1,9 +1,15 @@
-//! Per-contact friction state that lives as long as its contact manifold: 36 bytes a contact.
+//! Per-contact friction state that lives as long as its contact manifold: 40 bytes a contact.
 //!
 //! Lookup is cheap: a manifold's `user_data` holds its slot index (+1) and an 8-bit
 //! generation, so the hook reaches its record with one uncontended read lock and one
-//! per-slot spin lock (a bit of the slot's own metadata word), never a global map under one
-//! lock per contact. Only manifolds whose `user_data` is 0 — new ones, and rapier's merged
+//! per-slot lock (a one-byte `parking_lot` mutex), never a global map under one lock per
+//! contact.
+//!
+//! **Copy out, copy in.** [`ContactStore::with_record`] copies the record out under the slot's
+//! lock, runs the caller's code on the copy with no lock of the store held, and writes the
+//! copy back under the lock. The wrapped user hook and the law run there, so a panic in
+//! either leaves every lock free (the record keeps its last stored state; the next step
+//! works), and a slow user hook never blocks another thread's contact. Only manifolds whose `user_data` is 0 — new ones, and rapier's merged
 //! "cluster" manifolds whose `user_data` is reset every step — go through a map keyed by the
 //! collider pair and which of its manifolds it is ([`ManifoldPart`]); a manifold found through
 //! its `user_data` leaves that map, so at steady state it holds only the cluster manifolds.
@@ -17,14 +23,12 @@
 //!
 //! The stored form ([`Slot`]) packs the record: the slip speed of the last step (used only to
 //! extrapolate an accelerating slip) is kept as a bfloat16 (8 significant bits), the colliders
-//! by arena index, and lock, liveness, sweep parity, regime and generation share
-//! one 16-bit word. The hook works on the unpacked [`ContactRecord`].
+//! by arena index, and liveness, sweep parity, regime and generation share one 16-bit word. The hook works on the unpacked [`ContactRecord`].
 
 use rapier3d::prelude::{ColliderHandle, Vector};
-use std::cell::UnsafeCell;
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap};
-use std::sync::atomic::{AtomicBool, AtomicU16, Ordering};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Mutex, RwLock};
 use stickslip_core::law::Regime;
 
@@ -128,8 +132,7 @@ pub(crate) fn from_bf16(x: u16) -> f32 {
     f32::from_bits((x as u32) << 16)
 }
 
-// The metadata word of a slot.
-const LOCK: u16 = 1;
+// The metadata word of a slot (bit 0 unused: it was the hand-written lock's).
 const LIVE: u16 = 1 << 1;
 /// Parity of the step that last touched the record (the sweep runs every step).
 const TOUCHED: u16 = 1 << 2;
@@ -180,66 +183,38 @@ struct Packed {
     c2: u32,
 }
 
-/// One slot: 36 bytes.
-pub(crate) struct Slot {
-    packed: UnsafeCell<Packed>,
-    slip_speed: UnsafeCell<u16>,
-    meta: AtomicU16,
+/// What a slot holds: 36 bytes.
+#[derive(Debug, Clone, Copy, Default)]
+struct SlotData {
+    packed: Packed,
+    slip_speed: u16,
+    meta: u16,
 }
 
-// The cells are only accessed by the thread holding the slot's LOCK bit (or through
-// `&mut ContactStore`).
-unsafe impl Sync for Slot {}
-
-impl std::fmt::Debug for Slot {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("Slot")
-            .field("meta", &self.meta.load(Ordering::Relaxed))
-            .finish_non_exhaustive()
-    }
-}
+/// One slot: its data behind a one-byte mutex, 40 bytes. The lock is held only to copy the
+/// record in or out (see the module docs), never while other code runs.
+#[derive(Debug, Default)]
+pub(crate) struct Slot(parking_lot::Mutex<SlotData>);
 
 impl Slot {
     fn dead(generation: u8) -> Self {
-        Slot {
-            packed: UnsafeCell::new(Packed::default()),
-            slip_speed: UnsafeCell::new(0),
-            meta: AtomicU16::new((generation as u16) << GENERATION_SHIFT),
-        }
+        Slot(parking_lot::Mutex::new(SlotData {
+            meta: (generation as u16) << GENERATION_SHIFT,
+            ..SlotData::default()
+        }))
+    }
+
+    fn data(&mut self) -> &mut SlotData {
+        self.0.get_mut()
     }
 
     fn meta_mut(&mut self) -> &mut u16 {
-        self.meta.get_mut()
+        &mut self.0.get_mut().meta
     }
 
     fn record(&mut self) -> ContactRecord {
-        let (p, slip, meta) = (
-            *self.packed.get_mut(),
-            *self.slip_speed.get_mut(),
-            *self.meta.get_mut(),
-        );
-        unpack(&p, slip, meta)
-    }
-
-    /// Spins until this thread holds the slot; returns the metadata word.
-    fn lock(&self) -> u16 {
-        loop {
-            let meta = self.meta.load(Ordering::Relaxed);
-            if meta & LOCK == 0
-                && self
-                    .meta
-                    .compare_exchange_weak(meta, meta | LOCK, Ordering::Acquire, Ordering::Relaxed)
-                    .is_ok()
-            {
-                return meta;
-            }
-            // Only two manifolds sharing one record (never in rapier's normal operation) wait.
-            std::hint::spin_loop();
-        }
-    }
-
-    fn unlock(&self, meta: u16) {
-        self.meta.store(meta & !LOCK, Ordering::Release);
+        let d = *self.0.get_mut();
+        unpack(&d.packed, d.slip_speed, d.meta)
     }
 }
 
@@ -348,49 +323,68 @@ impl ContactStore {
         step: u32,
         f: impl FnOnce(&mut ContactRecord, bool, u32) -> R,
     ) -> R {
+        let (index, new) = self.find_or_create(user_data, key);
+        let ours = *user_data;
+        let mut rec = self.load(index, step);
+        let before = rec.inner_user_data;
+        // No lock of the store is held here (see the module docs).
+        let out = f(&mut rec, new, ours);
+        self.store(index, ours, &rec, before, step);
+        out
+    }
+
+    /// The slot of the manifold with `key` (and whether it was created now); points
+    /// `user_data` at it.
+    fn find_or_create(&self, user_data: &mut u32, key: &ContactKey) -> (u32, bool) {
         let (c1, c2) = (index_of(key.c1), index_of(key.c2));
+        // Whether `slot` is live, of this pair and (if given) of `generation`.
+        let fits = |d: &SlotData, generation: Option<u8>| {
+            d.meta & LIVE != 0
+                && generation.is_none_or(|g| g == generation_of(d.meta))
+                && d.packed.c1 == c1
+                && d.packed.c2 == c2
+        };
         {
             let slots = self.slots.read().unwrap_or_else(|e| e.into_inner());
-            // Locks slot `index` if it is live, of this pair and (if given) of `generation`.
-            let try_slot = |index: u32, generation: Option<u8>| -> Option<(&Slot, u16)> {
-                let slot = slots.get(index as usize)?;
-                let meta = slot.lock();
-                // SAFETY: this thread holds the slot's lock.
-                let p = unsafe { &*slot.packed.get() };
-                let ok = meta & LIVE != 0
-                    && generation.is_none_or(|g| g == generation_of(meta))
-                    && p.c1 == c1
-                    && p.c2 == c2;
-                if ok {
-                    Some((slot, meta))
-                } else {
-                    slot.unlock(meta);
-                    None
-                }
-            };
             if let Some((index, generation)) = decode(*user_data)
-                && let Some((slot, mut meta)) = try_slot(index, Some(generation))
+                && let Some(slot) = slots.get(index as usize)
             {
-                // Found through its user_data: the manifold keeps it, the key map can let go.
-                if meta & KEYED != 0 {
-                    let mut by_key = lock(&self.by_key);
-                    if by_key.get(key) == Some(&index) {
-                        by_key.remove(key);
-                        meta &= !KEYED;
+                let mut d = slot.0.lock();
+                if fits(&d, Some(generation)) {
+                    // Found through its user_data: the manifold keeps it, the key map can let
+                    // go.
+                    if d.meta & KEYED != 0 {
+                        let mut by_key = lock(&self.by_key);
+                        if by_key.get(key) == Some(&index) {
+                            by_key.remove(key);
+                            d.meta &= !KEYED;
+                        }
                     }
+                    return (index, false);
                 }
-                return self.run(slot, index, meta, step, false, *user_data, f);
             }
             let known = lock(&self.by_key).get(key).copied();
             if let Some(index) = known
-                && let Some((slot, meta)) = try_slot(index, None)
+                && let Some(slot) = slots.get(index as usize)
             {
-                *user_data = encode(index, generation_of(meta));
-                return self.run(slot, index, meta, step, false, *user_data, f);
+                let d = slot.0.lock();
+                if fits(&d, None) {
+                    *user_data = encode(index, generation_of(d.meta));
+                    return (index, false);
+                }
             }
         }
         // New contact: allocate under the write lock (rare: only when contacts appear).
         let mut slots = self.slots.write().unwrap_or_else(|e| e.into_inner());
+        // Another thread may have created this manifold's record since the read above.
+        let known = lock(&self.by_key).get(key).copied();
+        if let Some(index) = known
+            && let Some(slot) = slots.get_mut(index as usize)
+            && fits(slot.data(), None)
+        {
+            *user_data = encode(index, generation_of(slot.data().meta));
+            return (index, false);
+        }
         let index = match lock(&self.free).pop() {
             Some(Reverse(i)) => i,
             None => {
@@ -405,46 +399,56 @@ impl ContactStore {
                 (slots.len() - 1) as u32
             }
         };
-        let slot = &mut slots[index as usize];
-        let generation = generation_of(*slot.meta_mut()).wrapping_add(1);
-        *slot.packed.get_mut() = Packed {
-            c1,
-            c2,
-            ..Packed::default()
+        let d = slots[index as usize].data();
+        let generation = generation_of(d.meta).wrapping_add(1);
+        *d = SlotData {
+            packed: Packed {
+                c1,
+                c2,
+                ..Packed::default()
+            },
+            slip_speed: 0,
+            meta: LIVE | KEYED | pack_regime(u8::MAX) | (generation as u16) << GENERATION_SHIFT,
         };
-        *slot.slip_speed.get_mut() = 0;
-        let meta = LIVE | KEYED | pack_regime(u8::MAX) | (generation as u16) << GENERATION_SHIFT;
-        *slot.meta_mut() = meta;
         lock(&self.by_key).insert(*key, index);
         lock(&self.inner_data).remove(&index);
         *user_data = encode(index, generation);
-        let slot = &slots[index as usize];
-        let meta = slot.lock();
-        self.run(slot, index, meta, step, true, *user_data, f)
+        (index, true)
     }
 
-    /// Runs `f` on the locked `slot`, stores the result and unlocks it.
-    #[allow(clippy::too_many_arguments)]
-    fn run<R>(
-        &self,
-        slot: &Slot,
-        index: u32,
-        meta: u16,
-        step: u32,
-        new: bool,
-        ours: u32,
-        f: impl FnOnce(&mut ContactRecord, bool, u32) -> R,
-    ) -> R {
-        // SAFETY: this thread holds the slot's lock (taken by the caller).
-        let (p, slip) = unsafe { (&mut *slot.packed.get(), &mut *slot.slip_speed.get()) };
-        let mut rec = unpack(p, *slip, meta);
-        let inner_used = self.inner_used.load(Ordering::Relaxed);
-        if inner_used {
+    /// A copy of the record in slot `index`, marked touched at `step`.
+    fn load(&self, index: u32, step: u32) -> ContactRecord {
+        let slots = self.slots.read().unwrap_or_else(|e| e.into_inner());
+        let Some(slot) = slots.get(index as usize) else {
+            return ContactRecord::default();
+        };
+        let mut rec = {
+            let mut d = slot.0.lock();
+            d.meta = (d.meta & !TOUCHED) | parity(step);
+            unpack(&d.packed, d.slip_speed, d.meta)
+        };
+        if self.inner_used.load(Ordering::Relaxed) {
             rec.inner_user_data = lock(&self.inner_data).get(&index).copied().unwrap_or(0);
         }
-        let before = rec.inner_user_data;
-        let out = f(&mut rec, new, ours);
-        if rec.inner_user_data != before {
+        rec
+    }
+
+    /// Writes `rec` back into slot `index` if it still holds the record `ours` points at.
+    fn store(&self, index: u32, ours: u32, rec: &ContactRecord, inner_before: u32, step: u32) {
+        let slots = self.slots.read().unwrap_or_else(|e| e.into_inner());
+        let Some(slot) = slots.get(index as usize) else {
+            return;
+        };
+        {
+            let mut d = slot.0.lock();
+            if d.meta & LIVE == 0 || Some((index, generation_of(d.meta))) != decode(ours) {
+                return;
+            }
+            let (c1, c2) = (d.packed.c1, d.packed.c2);
+            (d.packed, d.slip_speed) = pack(rec, c1, c2);
+            d.meta = (with_state(d.meta, rec) & !TOUCHED) | parity(step);
+        }
+        if rec.inner_user_data != inner_before {
             let mut map = lock(&self.inner_data);
             if rec.inner_user_data == 0 {
                 map.remove(&index);
@@ -453,11 +457,6 @@ impl ContactStore {
                 self.inner_used.store(true, Ordering::Relaxed);
             }
         }
-        let (c1, c2) = (p.c1, p.c2);
-        (*p, *slip) = pack(&rec, c1, c2);
-        let meta = (with_state(meta, &rec) & !TOUCHED) | parity(step);
-        slot.unlock(meta);
-        out
     }
 
     /// Drops every record not touched at `step`, cuts free slots off the end and gives back
@@ -480,7 +479,7 @@ impl ContactStore {
             if meta & LIVE == 0 || meta & TOUCHED == parity(step) {
                 continue;
             }
-            let p = slot.packed.get_mut();
+            let p = slot.data().packed;
             if held(p.c1, p.c2, encode(i as u32, generation_of(meta))) {
                 *slot.meta_mut() = (meta & !TOUCHED) | parity(step);
             } else {
@@ -520,7 +519,7 @@ impl ContactStore {
         let live = |i: u32| {
             slots
                 .get(i as usize)
-                .is_some_and(|s| s.meta.load(Ordering::Relaxed) & LIVE != 0)
+                .is_some_and(|s| s.0.lock().meta & LIVE != 0)
         };
         let by_key = self.by_key.get_mut().unwrap_or_else(|e| e.into_inner());
         by_key.retain(|_, i| live(*i));
@@ -555,7 +554,7 @@ impl ContactStore {
     pub fn remove_collider(&mut self, collider: ColliderHandle) {
         let c = index_of(collider);
         self.release(|slot| {
-            let p = slot.packed.get_mut();
+            let p = slot.data().packed;
             p.c1 == c || p.c2 == c
         });
     }
@@ -573,7 +572,7 @@ impl ContactStore {
         let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
         let slot = slots.get_mut(index as usize)?;
         let meta = *slot.meta_mut();
-        let p = slot.packed.get_mut();
+        let p = slot.data().packed;
         let ok = meta & LIVE != 0
             && generation_of(meta) == generation
             && p.c1 == index_of(c1)
@@ -591,7 +590,7 @@ impl ContactStore {
             .get_mut()
             .unwrap_or_else(|e| e.into_inner())
             .iter_mut()
-            .filter(|s| s.meta.load(Ordering::Relaxed) & LIVE != 0)
+            .filter(|s| s.0.lock().meta & LIVE != 0)
             .count()
     }
 
@@ -626,10 +625,11 @@ impl ContactStore {
             .iter()
             .enumerate()
             .map(|(i, s)| {
-                let meta = s.lock();
-                // SAFETY: this thread holds the slot's lock.
-                let (p, slip) = unsafe { (*s.packed.get(), *s.slip_speed.get()) };
-                s.unlock(meta);
+                let SlotData {
+                    packed: p,
+                    slip_speed: slip,
+                    meta,
+                } = *s.0.lock();
                 let live = (meta & LIVE != 0).then(|| LiveImage {
                     c1: p.c1,
                     c2: p.c2,
@@ -675,8 +675,8 @@ impl ContactStore {
                 None => free.push(Reverse(i as u32)),
                 Some(l) => {
                     let (p, slip) = pack(&l.record, l.c1, l.c2);
-                    *slot.packed.get_mut() = p;
-                    *slot.slip_speed.get_mut() = slip;
+                    slot.data().packed = p;
+                    slot.data().slip_speed = slip;
                     let mut meta = with_state(*slot.meta_mut(), &l.record) | LIVE;
                     if l.touched_odd {
                         meta |= TOUCHED;
@@ -693,9 +693,9 @@ impl ContactStore {
         for (key, index) in &image.keys {
             let slot = slots
                 .get_mut(*index as usize)
-                .filter(|s| s.meta.load(Ordering::Relaxed) & LIVE != 0)
+                .filter(|s| s.0.lock().meta & LIVE != 0)
                 .ok_or_else(|| format!("key map: slot {index} is not a live record"))?;
-            let p = slot.packed.get_mut();
+            let p = slot.data().packed;
             if (p.c1, p.c2) != (index_of(key.c1), index_of(key.c2)) {
                 return Err(format!("key map: slot {index} is not a record of its pair"));
             }
@@ -732,8 +732,9 @@ mod tests {
     }
 
     #[test]
-    fn a_slot_is_36_bytes() {
-        assert_eq!(std::mem::size_of::<Slot>(), 36);
+    fn a_slot_is_40_bytes() {
+        assert_eq!(std::mem::size_of::<SlotData>(), 36);
+        assert_eq!(std::mem::size_of::<Slot>(), 40);
     }
 
     #[test]

@@ -11,8 +11,10 @@ use crate::contact_store::{ContactKey, ContactRecord, ManifoldPart};
 use crate::measure::{Measured, centroid, measure, point_velocity};
 use crate::modifier::StickSlip;
 use crate::tangent::TangentBasis;
+use crate::warnings::Warning;
 use rapier3d::prelude::*;
 use std::sync::atomic::Ordering;
+use stickslip_core::law::Law;
 
 /// Whether a shape reaches the narrow phase as parts, each pair of parts with its own
 /// manifold.
@@ -67,6 +69,22 @@ impl<H: PhysicsHooks> PhysicsHooks for StickSlip<H> {
     }
 
     fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
+        // Pairs without an attached collider are the user's alone.
+        if !self.owns(ctx.collider1, ctx.collider2) {
+            self.inner.modify_solver_contacts(ctx);
+            return;
+        }
+        if !self.clock.open {
+            self.warn_once(
+                Warning::NoBeginStep,
+                "stickslip: the physics hook ran without StickSlip::begin_step since the last \
+                 end_step; stickslip leaves such steps to rapier's friction (call begin_step \
+                 before and end_step after every PhysicsPipeline::step, or use \
+                 StickSlip::step)",
+            );
+            self.inner.modify_solver_contacts(ctx);
+            return;
+        }
         let Some(rigid) = ctx.rigid() else {
             self.inner.modify_solver_contacts(ctx);
             return;
@@ -129,13 +147,22 @@ impl<H: PhysicsHooks> StickSlip<H> {
         measured: Option<&Measured>,
     ) {
         let (c1, c2) = (ctx.collider1, ctx.collider2);
+        let colliders = ctx.colliders;
+        self.with_pair_law(colliders, c1, c2, |law| {
+            self.step_manifold(ctx, rec, measured, law)
+        });
+    }
+
+    fn step_manifold(
+        &self,
+        ctx: &mut ContactModificationContext,
+        rec: &mut ContactRecord,
+        measured: Option<&Measured>,
+        law: &Law,
+    ) {
+        let (c1, c2) = (ctx.collider1, ctx.collider2);
         let bodies = ctx.bodies;
         let (rb1, rb2) = (ctx.rigid_body1, ctx.rigid_body2);
-        let material = self
-            .materials
-            .get(c1)
-            .or_else(|| self.materials.get(c2))
-            .unwrap_or(&self.default_material);
         let source = self.vibrations.get(c1).or_else(|| self.vibrations.get(c2));
         let rel = if self.vibrations.get(c1).is_some() {
             -1.0
@@ -168,7 +195,7 @@ impl<H: PhysicsHooks> StickSlip<H> {
         let out = step_contact(
             rec,
             &ContactInput {
-                law: &material.law,
+                law,
                 source,
                 rel,
                 basis: &basis,

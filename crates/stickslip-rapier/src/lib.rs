@@ -21,12 +21,17 @@
 //! let law = Law::elasto_plastic(1e4, 0.5, 0.55, Curve::constant(0.55).unwrap()).unwrap();
 //! // Per-contact reports are opt-in (the friction is the same without them).
 //! let mut friction = StickSlip::new(FrictionMaterial::new(law)).with_read_back(ReadBack::Contacts);
+//! // Both sides attached: the pair is the material's alone. (An unattached cube would bring
+//! // its rapier friction, 0.5 by default, combined with the material like rapier combines
+//! // coefficients; pairs without an attached collider stay plain rapier's.)
 //! friction.attach(&mut world.colliders, ground, None);
+//! friction.attach(&mut world.colliders, cube, None);
 //! for _ in 0..60 {
 //!     friction.step(&mut world);
 //! }
 //! // The read-back: the 125 kg box's weight rests on the contact, which sticks.
-//! let report = &friction.reports()[0];
+//! // `reports()` is an error, not an empty slice, when read-back is off.
+//! let report = &friction.reports().unwrap()[0];
 //! assert!((report.normal_force - 125.0 * 9.81).abs() < 0.02 * 125.0 * 9.81);
 //! assert_eq!(report.regime, stickslip_core::law::Regime::Sticking);
 //! # let _ = (body, cube);
@@ -49,6 +54,7 @@ mod hook;
 mod material;
 mod measure;
 mod modifier;
+mod pair_law;
 mod read_back;
 mod report;
 pub mod scenes;
@@ -56,11 +62,13 @@ pub mod snapshot;
 mod tangent;
 mod vibration;
 mod vibration_limit;
+mod warnings;
 
 pub use material::FrictionMaterial;
 pub use modifier::{
     MAX_DT, MIN_DT, ReadBack, SWEEP_INTERVAL, StickSlip, StickSlipConfig, valid_dt,
 };
+pub use pair_law::{MAX_COMBINATIONS, combine_rule};
 pub use report::{ContactReport, WorldTotals};
 pub use snapshot::{SnapshotError, StickSlipSnapshot, WorldSnapshot};
 pub use vibration::{

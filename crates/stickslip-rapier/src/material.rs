@@ -5,8 +5,10 @@ use stickslip_core::law::Law;
 
 /// The friction law a collider's contacts use (and its parameters).
 ///
-/// When both colliders of a contact carry a material, the first collider's (rapier's
-/// `collider1` of the pair) is used; colliders without one fall back to the modifier's default.
+/// Two colliders' materials combine like rapier's friction coefficients, by the colliders'
+/// `friction_combine_rule` (see [`crate::StickSlip::attach`]); a pair can have its own
+/// ([`crate::StickSlip::set_pair_material`]). Attached colliders without one use the
+/// modifier's default.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct FrictionMaterial {
     /// The law: elasto-plastic (the point of stickslip), or a baseline for comparison.

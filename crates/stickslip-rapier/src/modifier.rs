@@ -4,8 +4,10 @@ use crate::collider_map::{ColliderBits, ColliderMap};
 use crate::contact_store::ContactStore;
 use crate::material::FrictionMaterial;
 use crate::measure::{Measured, measure};
+use crate::pair_law::{Combined, PairMaterials, Palette, pair_key};
 use crate::report::{ContactReport, WorldTotals};
 use crate::vibration::VibrationSource;
+use crate::warnings::{Warned, Warning};
 use rapier3d::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
@@ -69,6 +71,8 @@ pub(crate) struct Clock {
     /// Sweeps of the contact store so far; the hook marks the records it touches with the
     /// next sweep's number.
     pub sweeps: u32,
+    /// Between `begin_step` and `end_step`: the hook may run.
+    pub open: bool,
 }
 
 impl Clock {
@@ -99,10 +103,25 @@ fn holds_manifold(
     })
 }
 
+/// What was asked of [`StickSlip::reports`] or [`StickSlip::totals`] is not read back: the
+/// modifier's [`ReadBack`] is below what it needs (an empty slice or zero totals would be
+/// indistinguishable from a world without contacts).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "stickslip does not read this back: it needs ReadBack::{needed:?}, read-back is \
+     ReadBack::{set:?} (set it with StickSlip::set_read_back)"
+)]
+pub struct NotReadBack {
+    /// The read-back the accessor needs.
+    pub needed: ReadBack,
+    /// The read-back that is set.
+    pub set: ReadBack,
+}
+
 /// What [`StickSlip::end_step`] reads back from the solver after each step.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Default, Serialize, Deserialize)]
 pub enum ReadBack {
-    /// Nothing: [`StickSlip::totals`] stays zero and [`StickSlip::reports`] empty, and the
+    /// Nothing: [`StickSlip::totals`] and [`StickSlip::reports`] return [`NotReadBack`], and the
     /// end-of-step pass over the narrow phase (which also drops the state of vanished contacts
     /// and keeps that of sleeping ones) runs only every [`SWEEP_INTERVAL`] steps. The
     /// friction itself is the same in every mode; this is the cheapest (default).
@@ -121,19 +140,30 @@ pub enum ReadBack {
 pub const SWEEP_INTERVAL: u32 = 8;
 
 /// The stickslip contact modifier: implements rapier's [`PhysicsHooks`], replacing plain
-/// Coulomb friction by a [`stickslip_core::law::Law`] per collider, with vibration sources,
-/// and optionally wrapping the user's own hooks `H` (filters, one-way platforms, conveyors),
-/// which run first.
+/// Coulomb friction by a [`stickslip_core::law::Law`] on the pairs with an attached collider
+/// ([`Self::attach`]; materials combine like rapier's coefficients, see
+/// [`Self::set_pair_material`]), with vibration sources, and optionally wrapping the user's
+/// own hooks `H` (filters, one-way platforms, conveyors), which run first. Pairs without an
+/// attached collider go to `H` untouched.
 ///
 /// Per step: [`StickSlip::begin_step`], `pipeline.step(.., &modifier, ..)`,
 /// [`StickSlip::end_step`] — or [`StickSlip::step`] on a [`PhysicsWorld`], which does all three.
 pub struct StickSlip<H = ()> {
     pub(crate) config: StickSlipConfig,
-    pub(crate) default_material: FrictionMaterial,
-    pub(crate) materials: ColliderMap<FrictionMaterial>,
+    /// Every material in use, by id (0: the default).
+    pub(crate) palette: Palette,
+    /// The material id of colliders attached with a material of their own.
+    pub(crate) materials: ColliderMap<u32>,
+    /// Colliders attached (their pairs are stickslip's), default material or not.
+    pub(crate) attached: ColliderBits,
+    /// Per-pair overrides, by [`pair_key`].
+    pub(crate) pair_materials: PairMaterials,
+    /// Laws of combined materials (see `pair_law`).
+    pub(crate) combined: Combined,
     pub(crate) vibrations: ColliderMap<VibrationSource>,
     /// Colliders whose hook flag `attach` turned on.
     pub(crate) flagged: ColliderBits,
+    pub(crate) warned: Warned,
     pub(crate) store: ContactStore,
     pub(crate) clock: Clock,
     pub(crate) inner: H,
@@ -161,13 +191,17 @@ impl StickSlip<()> {
     }
 }
 
-impl<H: PhysicsHooks> StickSlip<H> {
+impl<H> StickSlip<H> {
     /// A modifier wrapping the user's hooks `inner`.
     pub fn with_hooks(material: impl Into<FrictionMaterial>, inner: H) -> Self {
         StickSlip {
             config: StickSlipConfig::default(),
-            default_material: material.into(),
+            palette: Palette::new(material.into()),
             materials: ColliderMap::default(),
+            attached: ColliderBits::default(),
+            pair_materials: PairMaterials::default(),
+            combined: Combined::default(),
+            warned: Warned::default(),
             vibrations: ColliderMap::default(),
             flagged: ColliderBits::default(),
             store: ContactStore::default(),
@@ -227,12 +261,43 @@ impl<H: PhysicsHooks> StickSlip<H> {
 
     /// The material of attached colliders that have none of their own.
     pub fn default_material(&self) -> &FrictionMaterial {
-        &self.default_material
+        self.palette.default_material()
     }
 
     /// The material a collider was given (`None`: it uses the default, or is not attached).
     pub fn material(&self, collider: ColliderHandle) -> Option<&FrictionMaterial> {
-        self.materials.get(collider)
+        self.materials.get(collider).map(|&id| self.palette.get(id))
+    }
+
+    /// Whether `collider` is attached ([`Self::attach`]): its pairs are stickslip's.
+    pub fn is_attached(&self, collider: ColliderHandle) -> bool {
+        self.attached.contains(collider)
+    }
+
+    /// Gives the pair `(a, b)` its own material, whatever the two colliders' materials and
+    /// combine rules are (a per-pair table, as Box2D and Godot users ask for). The pair must
+    /// have an attached collider to be stickslip's. Order does not matter.
+    pub fn set_pair_material(
+        &mut self,
+        a: ColliderHandle,
+        b: ColliderHandle,
+        material: impl Into<FrictionMaterial>,
+    ) {
+        self.pair_materials.insert(pair_key(a, b), material.into());
+    }
+
+    /// Removes a pair's own material (it combines its colliders' again).
+    pub fn remove_pair_material(
+        &mut self,
+        a: ColliderHandle,
+        b: ColliderHandle,
+    ) -> Option<FrictionMaterial> {
+        self.pair_materials.remove(&pair_key(a, b))
+    }
+
+    /// A pair's own material ([`Self::set_pair_material`]).
+    pub fn pair_material(&self, a: ColliderHandle, b: ColliderHandle) -> Option<&FrictionMaterial> {
+        self.pair_materials.get(&pair_key(a, b))
     }
 
     /// The wrapped hooks.
@@ -245,8 +310,15 @@ impl<H: PhysicsHooks> StickSlip<H> {
         &mut self.inner
     }
 
-    /// Opts `collider` in: turns on its `MODIFY_SOLVER_CONTACTS` hook and gives it
-    /// `material` (or the default when `None`).
+    /// Opts `collider` in: its pairs become stickslip's. Turns on its
+    /// `MODIFY_SOLVER_CONTACTS` hook and gives it `material` (or the default when `None`).
+    ///
+    /// A pair's law: its own material if [`Self::set_pair_material`] gave it one; else the two
+    /// sides combined by the higher of their rapier `friction_combine_rule`s (rapier's order),
+    /// an attached side bringing its material, an unattached side its rapier `friction` as
+    /// plain Coulomb (see `stickslip_core::law::CombineRule` for how each coefficient, the
+    /// stiffness and the law kind combine). Pairs without an attached collider are never
+    /// touched: they go to the wrapped hooks with rapier's friction.
     pub fn attach(
         &mut self,
         colliders: &mut ColliderSet,
@@ -269,9 +341,11 @@ impl<H: PhysicsHooks> StickSlip<H> {
             }
             c.set_active_hooks(c.active_hooks() | ActiveHooks::MODIFY_SOLVER_CONTACTS);
         }
+        self.attached.set(collider, true);
         match material {
             Some(m) => {
-                self.materials.insert(collider, m);
+                let id = self.palette.id(m);
+                self.materials.insert(collider, id);
             }
             None => {
                 self.materials.remove(collider);
@@ -296,17 +370,22 @@ impl<H: PhysicsHooks> StickSlip<H> {
             c.set_solver_groups(InteractionGroups::none());
             c.set_solver_groups(groups);
         }
+        self.attached.set(collider, false);
         self.materials.remove(collider);
+        self.pair_materials
+            .retain(|&(a, b), _| a != collider && b != collider);
         self.vibrations.remove(collider);
         self.store.remove_collider(collider);
         self.reports
             .retain(|r| r.collider1 != collider && r.collider2 != collider);
     }
 
-    /// Sets the material of a collider (its hook flag must be on, see [`Self::attach`]). A
-    /// handle whose index no collider set of this process could hold (≥ 2²⁴) is ignored.
+    /// Sets the material of a collider (it takes effect once the collider is attached, see
+    /// [`Self::attach`]). A handle whose index no collider set of this process could hold
+    /// (≥ 2²⁴) is ignored.
     pub fn set_material(&mut self, collider: ColliderHandle, material: FrictionMaterial) {
-        self.materials.insert(collider, material);
+        let id = self.palette.id(material);
+        self.materials.insert(collider, id);
     }
 
     /// Attaches a vibration source to a collider; its contacts feel it. A handle whose index no
@@ -330,7 +409,23 @@ impl<H: PhysicsHooks> StickSlip<H> {
     /// A step whose `dt` is not a time step ([`valid_dt`]: non-finite, or outside
     /// [[`MIN_DT`], [`MAX_DT`]]) is skipped by the modifier: no contact state, clock or total changes
     /// (rapier's own step with such a dt is the caller's; [`Self::step`] skips both).
+    ///
+    /// stickslip realizes its law with one friction constraint per manifold
+    /// (`FrictionModel::Simplified`, rapier's 3D default); a world with another friction model
+    /// is stepped all the same, with a one-time warning through `log`.
     pub fn begin_step(&mut self, params: &IntegrationParameters) {
+        if params.friction_model != FrictionModel::Simplified {
+            self.warn_once(
+                Warning::FrictionModel,
+                &format!(
+                    "stickslip: the world uses {:?}; stickslip keeps one friction state per \
+                     contact manifold and needs FrictionModel::Simplified (rapier's 3D \
+                     default): friction and reports of this world are approximate",
+                    params.friction_model
+                ),
+            );
+        }
+        self.clock.open = true;
         let dt = params.dt as f64;
         self.clock.dt = if valid_dt(dt) { dt } else { 0.0 };
         self.clock.step = self.clock.step.wrapping_add(1);
@@ -349,6 +444,7 @@ impl<H: PhysicsHooks> StickSlip<H> {
         colliders: &ColliderSet,
     ) {
         let dt = self.clock.dt;
+        self.clock.open = false;
         self.clock.time += dt;
         self.measure_patches(narrow_phase, dt);
         let read_back = self.read_back;
@@ -439,13 +535,19 @@ impl<H: PhysicsHooks> StickSlip<H> {
 
     /// One step of `world` with this modifier (and no event handler of yours: pass one with
     /// [`Self::step_with_events`]).
-    pub fn step(&mut self, world: &mut PhysicsWorld) {
+    pub fn step(&mut self, world: &mut PhysicsWorld)
+    where
+        H: PhysicsHooks,
+    {
         self.step_with_events(world, &());
     }
 
     /// One step of `world` with this modifier and `events`. A `dt` that is not a time step
     /// ([`valid_dt`]) skips the step: neither rapier nor the modifier changes anything.
-    pub fn step_with_events(&mut self, world: &mut PhysicsWorld, events: &dyn EventHandler) {
+    pub fn step_with_events(&mut self, world: &mut PhysicsWorld, events: &dyn EventHandler)
+    where
+        H: PhysicsHooks,
+    {
         if !valid_dt(world.integration_parameters.dt as f64) {
             return;
         }
@@ -455,16 +557,29 @@ impl<H: PhysicsHooks> StickSlip<H> {
     }
 
     /// Per-contact reports of the last step: one per contact manifold with solver contacts,
-    /// in the narrow phase's order. Empty unless [`ReadBack::Contacts`] is set
-    /// ([`Self::set_read_back`]).
-    pub fn reports(&self) -> &[ContactReport] {
-        &self.reports
+    /// in the narrow phase's order. [`NotReadBack`] unless [`ReadBack::Contacts`] is set
+    /// ([`Self::set_read_back`]): an empty slice always means no contacts.
+    pub fn reports(&self) -> Result<&[ContactReport], NotReadBack> {
+        self.needs(ReadBack::Contacts)?;
+        Ok(&self.reports)
     }
 
-    /// World totals of the last step (zero unless [`Self::read_back`] is
-    /// [`ReadBack::Totals`] or [`ReadBack::Contacts`]).
-    pub fn totals(&self) -> WorldTotals {
-        self.totals
+    /// World totals of the last step. [`NotReadBack`] unless [`Self::read_back`] is
+    /// [`ReadBack::Totals`] or [`ReadBack::Contacts`]: zero totals always mean no contacts.
+    pub fn totals(&self) -> Result<WorldTotals, NotReadBack> {
+        self.needs(ReadBack::Totals)?;
+        Ok(self.totals)
+    }
+
+    fn needs(&self, needed: ReadBack) -> Result<(), NotReadBack> {
+        if self.read_back >= needed {
+            Ok(())
+        } else {
+            Err(NotReadBack {
+                needed,
+                set: self.read_back,
+            })
+        }
     }
 
     /// Simulated time (s) at the end of the last step.

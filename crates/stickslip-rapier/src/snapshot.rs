@@ -80,7 +80,7 @@ use stickslip_core::law::Regime;
 use stickslip_core::waveform::Waveform;
 
 /// Version of the snapshot format written by this build (and the only one it reads).
-pub const FORMAT_VERSION: u32 = 4;
+pub const FORMAT_VERSION: u32 = 5;
 
 const MAGIC: [u8; 8] = *b"STKSLIP\0";
 /// Header kind of a [`StickSlipSnapshot`] file.
@@ -166,6 +166,13 @@ impl From<Handle> for ColliderHandle {
     fn from(h: Handle) -> Self {
         ColliderHandle::from_raw_parts(h.index, h.generation)
     }
+}
+
+/// A per-pair material.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+struct PairEntry {
+    colliders: [Handle; 2],
+    material: FrictionMaterial,
 }
 
 /// One entry of a per-collider table.
@@ -598,6 +605,10 @@ pub struct StickSlipSnapshot {
     vibrations: Vec<Entry<VibrationSnapshot>>,
     /// Arena indices of the colliders whose hook flag the modifier turned on.
     flagged: Vec<u32>,
+    /// Arena indices of the attached colliders.
+    attached: Vec<u32>,
+    /// Per-pair materials.
+    pair_materials: Vec<PairEntry>,
     contacts: ContactsSnapshot,
     clock: ClockSnapshot,
     totals: TotalsSnapshot,
@@ -631,6 +642,25 @@ impl StickSlipSnapshot {
     }
 }
 
+/// The colliders of `indices` (increasing arena indices) that are in `colliders`.
+fn restore_bits(
+    field: &'static str,
+    indices: &[u32],
+    colliders: &ColliderSet,
+) -> Result<ColliderBits, SnapshotError> {
+    let mut bits = ColliderBits::default();
+    for (k, &i) in indices.iter().enumerate() {
+        if k > 0 && indices[k - 1] >= i {
+            return Err(invalid(field, "indices not increasing"));
+        }
+        // Only colliders of the set size the bit set; others can never be stepped.
+        if let Some((_, handle)) = colliders.get_unknown_gen(i) {
+            bits.set(handle, true);
+        }
+    }
+    Ok(bits)
+}
+
 /// Entries of `entries` whose collider is in `colliders`, in a fresh map; entries must come
 /// in increasing collider order (as [`StickSlip::snapshot`] writes them).
 fn restore_map<T, U>(
@@ -661,13 +691,13 @@ impl<H> StickSlip<H> {
         let t = &self.totals;
         StickSlipSnapshot {
             config: self.config,
-            default_material: self.default_material.clone(),
+            default_material: self.palette.default_material().clone(),
             materials: self
                 .materials
                 .iter()
-                .map(|(h, m)| Entry {
+                .map(|(h, &id)| Entry {
                     collider: h.into(),
-                    value: m.clone(),
+                    value: self.palette.get(id).clone(),
                 })
                 .collect(),
             vibrations: self
@@ -679,6 +709,20 @@ impl<H> StickSlip<H> {
                 })
                 .collect(),
             flagged: self.flagged.indices().collect(),
+            attached: self.attached.indices().collect(),
+            pair_materials: {
+                let mut pairs: Vec<PairEntry> = self
+                    .pair_materials
+                    .iter()
+                    .map(|(&(a, b), m)| PairEntry {
+                        colliders: [a.into(), b.into()],
+                        material: m.clone(),
+                    })
+                    .collect();
+                // The map's order never matters; sorted, equal states give equal snapshots.
+                pairs.sort_by_key(|p| p.colliders.map(|h| (h.index, h.generation)));
+                pairs
+            },
             contacts: (&self.store).into(),
             clock: ClockSnapshot {
                 time: self.clock.time,
@@ -727,16 +771,8 @@ impl<H> StickSlip<H> {
                 source,
             })
         })?;
-        let mut flagged = ColliderBits::default();
-        for (k, &i) in s.flagged.iter().enumerate() {
-            if k > 0 && s.flagged[k - 1] >= i {
-                return Err(invalid("hook flags", "indices not increasing"));
-            }
-            // Only colliders of the set size the bit set; others can never be stepped.
-            if let Some((_, handle)) = colliders.get_unknown_gen(i) {
-                flagged.set(handle, true);
-            }
-        }
+        let flagged = restore_bits("hook flags", &s.flagged, colliders)?;
+        let attached = restore_bits("attached colliders", &s.attached, colliders)?;
         let store = s.contacts.to_store()?;
         let c = s.clock;
         if !(c.time.is_finite() && c.dt.is_finite() && c.dt >= 0.0) {
@@ -771,32 +807,36 @@ impl<H> StickSlip<H> {
             .iter()
             .map(|r| r.to_report())
             .collect::<Result<Vec<_>, _>>()?;
-        Ok(StickSlip {
-            config: s.config,
-            default_material: s.default_material.clone(),
-            materials,
-            vibrations,
-            flagged,
-            store,
-            clock: Clock {
-                time: c.time,
-                dt: c.dt,
-                step: c.step,
-                // Set from the integration parameters by every begin_step.
-                clustering: true,
-                sweeps: c.sweeps,
-            },
-            inner,
-            // Reset by every begin_step, set by the hook during the step.
-            moving_surfaces: std::sync::atomic::AtomicBool::new(false),
-            read_back: s.read_back,
-            reports,
-            totals,
-            // Not part of a snapshot: a restored composite-shape patch reads its first step
-            // from the manifold's points.
-            patches_seen: Default::default(),
-            patches_measured: Default::default(),
-        })
+        let mut m = StickSlip::with_hooks(s.default_material.clone(), inner);
+        for (h, material) in materials.iter() {
+            m.set_material(h, material.clone());
+        }
+        for p in &s.pair_materials {
+            let [a, b] = p.colliders.map(ColliderHandle::from);
+            if colliders.contains(a) && colliders.contains(b) {
+                m.set_pair_material(a, b, p.material.clone());
+            }
+        }
+        m.config = s.config;
+        m.attached = attached;
+        m.vibrations = vibrations;
+        m.flagged = flagged;
+        m.store = store;
+        m.clock = Clock {
+            time: c.time,
+            dt: c.dt,
+            step: c.step,
+            // Set from the integration parameters by every begin_step.
+            clustering: true,
+            sweeps: c.sweeps,
+            open: false,
+        };
+        m.read_back = s.read_back;
+        m.reports = reports;
+        m.totals = totals;
+        // Not part of a snapshot: a restored composite-shape patch reads its first step from
+        // the manifold's points; combined laws are computed again.
+        Ok(m)
     }
 }
 

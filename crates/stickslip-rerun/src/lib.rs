@@ -451,7 +451,8 @@ impl RerunLogger {
         world: &PhysicsWorld,
         stickslip: &StickSlip<H>,
     ) -> Result<(), LogError> {
-        let reports = stickslip.reports();
+        // Nothing to draw unless the modifier reads contacts back (ReadBack::Contacts).
+        let reports = stickslip.reports().unwrap_or_default();
         if self.force_scale.is_none() && !reports.is_empty() {
             let max = reports.iter().map(|r| r.normal_force).fold(0.0, f64::max);
             if max > 0.0 {
@@ -477,7 +478,7 @@ impl RerunLogger {
         )?;
 
         // World totals.
-        let totals = stickslip.totals();
+        let totals = stickslip.totals().unwrap_or_default();
         for (series, count) in
             paths::REGIME_SERIES
                 .iter()

@@ -67,7 +67,7 @@ fn record(
         let s = runner.scene();
         exp.steps.push(step as i64);
         exp.times.push(s.stickslip.time());
-        let reports = s.stickslip.reports();
+        let reports = s.stickslip.reports().unwrap();
         exp.contacts.push(reports.len());
         exp.classes.push(
             reports

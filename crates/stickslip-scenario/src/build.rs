@@ -897,6 +897,19 @@ fn body_builder(b: &BodySpec, start: [f64; 3]) -> RigidBodyBuilder {
     }
 }
 
+/// rapier's rule for a scenario's.
+fn rapier_rule(rule: stickslip_rapier::core::law::CombineRule) -> CoefficientCombineRule {
+    use stickslip_rapier::core::law::CombineRule as R;
+    match rule {
+        R::Average => CoefficientCombineRule::Average,
+        R::Min => CoefficientCombineRule::Min,
+        R::Multiply => CoefficientCombineRule::Multiply,
+        R::Max => CoefficientCombineRule::Max,
+        R::ClampedSum => CoefficientCombineRule::ClampedSum,
+        R::GeometricMean => CoefficientCombineRule::GeometricMean,
+    }
+}
+
 fn collider_builder(c: &ColliderSpec) -> ColliderBuilder {
     let builder = match &c.shape {
         ShapeSpec::Cuboid { half_extents: h } => {
@@ -911,6 +924,7 @@ fn collider_builder(c: &ColliderSpec) -> ColliderBuilder {
     let mut builder = builder
         .position(Pose::from_parts(vec3(c.offset), rotation(c.rotation_deg)))
         .friction(c.friction as f32)
+        .friction_combine_rule(rapier_rule(c.combine))
         .restitution(c.restitution as f32);
     if let Some(d) = c.density {
         builder = builder.density(d as f32);

@@ -130,7 +130,7 @@ impl Runner {
         apply_drivers(&scene.drivers, &mut scene.world.bodies, handles, t, dt);
         scene.stickslip.step(&mut scene.world);
         self.steps += 1;
-        let reports = scene.stickslip.reports();
+        let reports = scene.stickslip.reports().unwrap_or_default();
         self.max_contacts = self.max_contacts.max(reports.len());
         for r in reports {
             self.regime_steps.add(r.regime);
@@ -154,7 +154,7 @@ impl Runner {
     pub fn summary(&self) -> Summary {
         let scene = &self.scene;
         let mut contacts = RegimeCounts::default();
-        for r in scene.stickslip.reports() {
+        for r in scene.stickslip.reports().unwrap_or_default() {
             contacts.add(r.regime);
         }
         let mut finite = true;
@@ -192,7 +192,11 @@ impl Runner {
             contacts,
             regime_steps: self.regime_steps,
             max_contacts: self.max_contacts,
-            dissipated_energy: scene.stickslip.totals().dissipated_energy,
+            dissipated_energy: scene
+                .stickslip
+                .totals()
+                .unwrap_or_default()
+                .dissipated_energy,
             finite,
             bodies,
         }

@@ -295,9 +295,15 @@ pub struct ColliderSpec {
     /// Mass (kg), instead of a density.
     #[serde(default)]
     pub mass: Option<f64>,
-    /// rapier's own friction coefficient, used for pairs without stickslip.
+    /// rapier's own friction coefficient: for pairs without stickslip, and the plain
+    /// Coulomb side of a pair with an attached collider (see `StickSlip::attach`).
     #[serde(default = "default_friction")]
     pub friction: f64,
+    /// How this collider's friction combines with another's (rapier's
+    /// `friction_combine_rule`, also for stickslip's materials): "average" (default), "min",
+    /// "multiply", "max", "clamped-sum", "geometric-mean".
+    #[serde(default)]
+    pub combine: stickslip_core::law::CombineRule,
     /// Restitution.
     #[serde(default)]
     pub restitution: f64,

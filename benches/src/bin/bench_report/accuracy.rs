@@ -100,6 +100,7 @@ impl<H: PhysicsHooks> Rig<H> {
                     .with_config(config)
                     .expect("valid config");
                 m.attach(&mut scene.world.colliders, scene.ground, None);
+                m.attach(&mut scene.world.colliders, scene.box_collider, None);
                 Rig {
                     scene,
                     modifier: Some(m),

@@ -32,6 +32,20 @@ impl Coulomb {
         })
     }
 
+    /// Coulomb friction with the valid coefficient nearest to `mu` (clamped into
+    /// [[`crate::error::MIN_COEFFICIENT`], [`crate::error::MAX_COEFFICIENT`]]; NaN gives the
+    /// minimum): for coefficients from elsewhere, e.g. a rapier collider's `friction` of 0.
+    pub fn clamped(mu: f64) -> Self {
+        use crate::error::{MAX_COEFFICIENT, MIN_COEFFICIENT};
+        Coulomb {
+            mu: if mu.is_nan() {
+                MIN_COEFFICIENT
+            } else {
+                mu.clamp(MIN_COEFFICIENT, MAX_COEFFICIENT)
+            },
+        }
+    }
+
     /// The coefficient.
     pub fn mu(&self) -> f64 {
         self.mu

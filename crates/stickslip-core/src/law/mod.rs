@@ -16,11 +16,13 @@
 //! counterpart; the state μ⃗ points along the slip it resists and the friction force is
 //! F_f = −F_n μ⃗ (seed Eq. 4a).
 
+mod combine;
 mod coulomb;
 mod elasto_plastic;
 mod physical;
 mod regularized;
 
+pub use combine::CombineRule;
 pub use coulomb::Coulomb;
 pub use elasto_plastic::{ElastoPlastic, EpVariant};
 pub use physical::Physical;

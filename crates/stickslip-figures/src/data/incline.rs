@@ -63,6 +63,7 @@ fn run(label: &str, law: Option<Law>, seconds: f64) -> Creep {
     let mut modifier = law.map(|l| {
         let mut m = StickSlip::new(FrictionMaterial::new(l));
         m.attach(&mut scene.world.colliders, scene.ground, None);
+        m.attach(&mut scene.world.colliders, scene.box_collider, None);
         m
     });
     let mut step = |scene: &mut stickslip_rapier::scenes::BoxScene| match modifier.as_mut() {

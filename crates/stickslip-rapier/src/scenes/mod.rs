@@ -150,7 +150,10 @@ fn sled_on_plate(
     let law = Law::elasto_plastic(c, mu0, mu0, Curve::constant(mu0)?)?;
     let mut modifier = crate::StickSlip::new(crate::FrictionMaterial::new(law))
         .with_read_back(crate::ReadBack::Contacts);
+    // Both sides attached: the pair is the material's alone (not combined with the box's
+    // rapier friction).
     modifier.attach(&mut scene.world.colliders, scene.ground, None);
+    modifier.attach(&mut scene.world.colliders, scene.box_collider, None);
     Ok((scene, modifier))
 }
 
@@ -257,7 +260,7 @@ impl PopovDrag {
             scene.set_force(Vector::new(0.0, -((self.normal_force + extra) as f32), 0.0));
             modifier.step(&mut scene.world);
             if k >= warm * self.steps_per_period
-                && let Some(r) = modifier.reports().first()
+                && let Some(r) = modifier.reports().ok().and_then(|r| r.first())
             {
                 sum_fx += -r.friction_force[0] as f64;
                 sum_fz += match self.drive {
@@ -324,8 +327,10 @@ pub fn example1_trace(
         ..BoxOnGround::default()
     }
     .build();
-    let mut modifier = crate::StickSlip::new(crate::FrictionMaterial::new(law));
+    let mut modifier = crate::StickSlip::new(crate::FrictionMaterial::new(law))
+        .with_read_back(crate::ReadBack::Contacts);
     modifier.attach(&mut scene.world.colliders, scene.ground, None);
+    modifier.attach(&mut scene.world.colliders, scene.box_collider, None);
     // Settle on the ground first, then t = 0.
     for _ in 0..(0.1 / dt).ceil() as usize {
         modifier.step(&mut scene.world);
@@ -338,14 +343,18 @@ pub fn example1_trace(
         scene.set_force(Vector::new(profile.value(t_mid) as f32, 0.0, 0.0));
         modifier.step(&mut scene.world);
         // The report's friction force acts on collider 2 when it is the box.
-        let friction = modifier.reports().first().map_or(0.0, |r| {
-            let f = r.friction_force[0] as f64;
-            if r.collider1 == scene.box_collider {
-                -f
-            } else {
-                f
-            }
-        });
+        let friction = modifier
+            .reports()
+            .ok()
+            .and_then(|r| r.first())
+            .map_or(0.0, |r| {
+                let f = r.friction_force[0] as f64;
+                if r.collider1 == scene.box_collider {
+                    -f
+                } else {
+                    f
+                }
+            });
         out.push(Example1Sample {
             t: (k + 1) as f64 * dt,
             x: scene.x() - x0,
@@ -381,7 +390,7 @@ pub fn feeder_speed(
     );
     let half = 0.02f32;
     let (v0x, v0y) = feeder.trough_velocity(0.0);
-    let (part, _) = world.insert(
+    let (part, part_collider) = world.insert(
         RigidBodyBuilder::dynamic()
             .translation(Vector::new(0.0, 0.05 + half, 0.0))
             .linvel(Vector::new(v0x as f32, v0y as f32, 0.0))
@@ -396,6 +405,7 @@ pub fn feeder_speed(
             let law = Law::elasto_plastic(c, mu, mu, Curve::constant(mu)?)?;
             let mut m = crate::StickSlip::new(crate::FrictionMaterial::new(law));
             m.attach(&mut world.colliders, trough_collider, None);
+            m.attach(&mut world.colliders, part_collider, None);
             Some(m)
         }
         None => None,
@@ -622,7 +632,7 @@ impl VibratingPlate {
             let t_mid = (k as f64 + 0.5) * dt;
             modifier.step(&mut scene.world);
             if k >= warm * spp
-                && let Some(r) = modifier.reports().first()
+                && let Some(r) = modifier.reports().ok().and_then(|r| r.first())
             {
                 // The report's friction acts on body 2.
                 let on_sled = if r.collider2 == scene.ground {

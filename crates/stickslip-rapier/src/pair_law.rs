@@ -1,0 +1,177 @@
+//! Which law a contact uses: only pairs with an attached collider are stickslip's; their law
+//! is the per-pair override if there is one, else the two sides' materials combined like
+//! rapier combines friction coefficients (see `stickslip_core::law::CombineRule`):
+//!
+//! - an attached collider brings its material (the modifier's default if it was attached
+//!   without one) and its rapier `friction_combine_rule`;
+//! - an unattached collider brings its rapier `friction` as a plain Coulomb material and its
+//!   rapier `friction_combine_rule`;
+//! - the rule is the higher of the two in rapier's order (GeometricMean > ClampedSum > Max >
+//!   Multiply > Min > Average), as rapier does.
+//!
+//! Combined laws are computed once per combination (material ids or plain coefficient, and
+//! rule) and cached; the cache holds at most [`MAX_COMBINATIONS`] (a world that changes a
+//! plain collider's `friction` every step only refills it). A combination whose coefficients
+//! leave the valid range (e.g. `Multiply` of two tiny coefficients) becomes plain Coulomb at
+//! the combined break-away coefficient, clamped into range, with a one-time warning.
+
+use crate::material::FrictionMaterial;
+use crate::modifier::StickSlip;
+use rapier3d::prelude::*;
+use std::collections::HashMap;
+use stickslip_core::law::{CombineRule, Coulomb, FrictionLaw, Law};
+
+/// Most combined laws the cache keeps before it starts over.
+pub const MAX_COMBINATIONS: usize = 4096;
+
+/// One side of a pair, as far as its law is concerned.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub(crate) enum Side {
+    /// An attached collider: its material's id in the palette (0: the default material).
+    Material(u32),
+    /// An unattached collider: its rapier friction coefficient (f32 bits).
+    Plain(u32),
+}
+
+/// A combination: both sides in a canonical order, and the rule.
+pub(crate) type CombineKey = (Side, Side, CombineRule);
+
+/// stickslip's rule for rapier's.
+pub fn combine_rule(rule: CoefficientCombineRule) -> CombineRule {
+    match rule {
+        CoefficientCombineRule::Average => CombineRule::Average,
+        CoefficientCombineRule::Min => CombineRule::Min,
+        CoefficientCombineRule::Multiply => CombineRule::Multiply,
+        CoefficientCombineRule::Max => CombineRule::Max,
+        CoefficientCombineRule::ClampedSum => CombineRule::ClampedSum,
+        CoefficientCombineRule::GeometricMean => CombineRule::GeometricMean,
+    }
+}
+
+/// Materials by id; id 0 is the default material.
+#[derive(Debug, Clone)]
+pub(crate) struct Palette(Vec<FrictionMaterial>);
+
+impl Palette {
+    pub fn new(default: FrictionMaterial) -> Self {
+        Palette(vec![default])
+    }
+
+    pub fn get(&self, id: u32) -> &FrictionMaterial {
+        self.0.get(id as usize).unwrap_or(&self.0[0])
+    }
+
+    pub fn default_material(&self) -> &FrictionMaterial {
+        &self.0[0]
+    }
+
+    /// The id of `material`, added if new (the palette holds each distinct material once).
+    pub fn id(&mut self, material: FrictionMaterial) -> u32 {
+        match self.0.iter().position(|m| *m == material) {
+            Some(i) => i as u32,
+            None => {
+                self.0.push(material);
+                (self.0.len() - 1) as u32
+            }
+        }
+    }
+}
+
+/// The pair key of a per-pair override: the two handles in a canonical order.
+pub(crate) fn pair_key(a: ColliderHandle, b: ColliderHandle) -> (ColliderHandle, ColliderHandle) {
+    let raw = |h: ColliderHandle| h.0.into_raw_parts();
+    if raw(a) <= raw(b) { (a, b) } else { (b, a) }
+}
+
+fn plain_law(mu: f64) -> Law {
+    Law::Coulomb(Coulomb::clamped(mu))
+}
+
+impl<H> StickSlip<H> {
+    /// Whether stickslip decides the friction of the pair: one of them was attached.
+    pub(crate) fn owns(&self, c1: ColliderHandle, c2: ColliderHandle) -> bool {
+        self.attached.contains(c1) || self.attached.contains(c2)
+    }
+
+    fn side(&self, colliders: &ColliderSet, h: ColliderHandle) -> (Side, CombineRule) {
+        let rule = colliders.get(h).map_or(CombineRule::Average, |c| {
+            combine_rule(c.friction_combine_rule())
+        });
+        if self.attached.contains(h) {
+            (
+                Side::Material(self.materials.get(h).copied().unwrap_or(0)),
+                rule,
+            )
+        } else {
+            let mu = colliders.get(h).map_or(0.0, |c| c.friction());
+            (Side::Plain(mu.to_bits()), rule)
+        }
+    }
+
+    fn side_law(&self, side: Side) -> Law {
+        match side {
+            Side::Material(id) => self.palette.get(id).law.clone(),
+            Side::Plain(bits) => plain_law(f32::from_bits(bits) as f64),
+        }
+    }
+
+    /// Runs `f` on the law of the pair `(c1, c2)` (which stickslip must own, see
+    /// [`Self::owns`]).
+    pub(crate) fn with_pair_law<R>(
+        &self,
+        colliders: &ColliderSet,
+        c1: ColliderHandle,
+        c2: ColliderHandle,
+        f: impl FnOnce(&Law) -> R,
+    ) -> R {
+        if !self.pair_materials.is_empty()
+            && let Some(m) = self.pair_materials.get(&pair_key(c1, c2))
+        {
+            return f(&m.law);
+        }
+        let ((s1, r1), (s2, r2)) = (self.side(colliders, c1), self.side(colliders, c2));
+        let rule = r1.effective(r2);
+        if let (Side::Material(a), Side::Material(b)) = (s1, s2)
+            && a == b
+            && rule.is_idempotent()
+        {
+            return f(&self.palette.get(a).law);
+        }
+        let key = if s1 <= s2 {
+            (s1, s2, rule)
+        } else {
+            (s2, s1, rule)
+        };
+        {
+            let cache = self.combined.read();
+            if let Some(law) = cache.get(&key) {
+                return f(law);
+            }
+        }
+        let mut cache = self.combined.write();
+        if cache.len() >= MAX_COMBINATIONS && !cache.contains_key(&key) {
+            cache.clear();
+        }
+        let law = cache.entry(key).or_insert_with(|| {
+            let (a, b) = (self.side_law(key.0), self.side_law(key.1));
+            a.combine(&b, rule).unwrap_or_else(|e| {
+                self.warn_once(
+                    crate::warnings::Warning::Combine,
+                    &format!(
+                        "stickslip: the materials of colliders {c1:?} and {c2:?} do not \
+                         combine by {rule:?} ({e}); the pair uses plain Coulomb friction"
+                    ),
+                );
+                plain_law(rule.apply(a.static_coefficient(), b.static_coefficient()))
+            })
+        });
+        // Held for this one contact's step, once per new combination.
+        f(law)
+    }
+}
+
+/// The combination cache (see the module docs).
+pub(crate) type Combined = parking_lot::RwLock<HashMap<CombineKey, Law>>;
+
+/// Per-pair overrides.
+pub(crate) type PairMaterials = HashMap<(ColliderHandle, ColliderHandle), FrictionMaterial>;
