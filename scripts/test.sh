@@ -31,4 +31,4 @@ cargo test --workspace
 # stickslip-bevy's optional parts: contact gizmos (`debug`) and scenario files as entities
 # (`scenario`), with their tests and doc tests (the window example is built by .ci/run).
 cargo test -p stickslip-bevy --features debug,scenario
-cargo test -p stickslip --features parallel --test rapier_many_contacts --test rapier_popov --test rapier_snapshot --test rapier_drive
+cargo test -p stickslip --features parallel --test rapier_many_contacts --test rapier_popov --test rapier_snapshot --test rapier_drive --test shared_world

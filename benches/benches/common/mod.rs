@@ -429,7 +429,8 @@ impl Bench {
                 let r = 0.1f32;
                 let side = (balls as f64).sqrt().ceil() as usize;
                 let gap = 0.5f32;
-                let extent = side as f32 * gap + 40.0;
+                // Far enough that criterion's many iterations never roll the balls off the edge.
+                let extent = side as f32 * gap + 20_000.0;
                 let ground = world.insert_collider(
                     ColliderBuilder::cuboid(extent, 0.1, extent).friction(MU),
                     None,

@@ -108,6 +108,27 @@ pub struct Density(pub f32);
 #[derive(Component, Debug, Clone, Copy, PartialEq)]
 pub struct Friction(pub f32);
 
+/// How a collider's friction combines with another's (rapier's `friction_combine_rule`; the
+/// rule stickslip combines materials by too). Without it: average, rapier's default.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Default)]
+pub struct FrictionCombine(pub stickslip_rapier::core::law::CombineRule);
+
+impl FrictionCombine {
+    /// rapier's rule.
+    pub fn rapier_rule(self) -> rapier3d::prelude::CoefficientCombineRule {
+        use rapier3d::prelude::CoefficientCombineRule as R;
+        use stickslip_rapier::core::law::CombineRule as C;
+        match self.0 {
+            C::Average => R::Average,
+            C::Min => R::Min,
+            C::Multiply => R::Multiply,
+            C::Max => R::Max,
+            C::ClampedSum => R::ClampedSum,
+            C::GeometricMean => R::GeometricMean,
+        }
+    }
+}
+
 /// Mass of a collider (kg), instead of a [`Density`]: sets its body's mass.
 #[derive(Component, Debug, Clone, Copy, PartialEq)]
 pub struct ColliderMass(pub f32);

@@ -82,7 +82,7 @@ mod writeback;
 
 pub use components::{
     AllowSleep, Ccd, Collider, ColliderMass, Damping, Density, ExternalForce, Friction,
-    LockRotations, RapierBody, RapierCollider, Restitution, RigidBody, Velocity,
+    FrictionCombine, LockRotations, RapierBody, RapierCollider, Restitution, RigidBody, Velocity,
 };
 pub use contacts::{Contact, ContactReports, RegimeChanged};
 pub use friction::{DefaultFriction, FrictionLaw, SurfaceVelocity, Vibration, default_material};

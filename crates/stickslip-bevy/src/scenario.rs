@@ -191,6 +191,7 @@ pub fn spawn_scenario(world: &mut World, scenario: &Scenario) -> Result<(), Buil
             Transform::from_translation(to_bevy(offset.translation))
                 .with_rotation(rot_to_bevy(offset.rotation)),
             Friction(rc.friction()),
+            FrictionCombine(stickslip_rapier::combine_rule(rc.friction_combine_rule())),
             Restitution(rc.restitution()),
             ChildOf(body.entity),
         ));

@@ -14,6 +14,7 @@ pub(crate) struct ColliderData {
     collider: &'static Collider,
     transform: &'static Transform,
     friction: Option<&'static Friction>,
+    combine: Option<&'static FrictionCombine>,
     density: Option<&'static Density>,
     mass: Option<&'static ColliderMass>,
     restitution: Option<&'static Restitution>,
@@ -114,6 +115,7 @@ fn insert_collider(
 ) -> rp::ColliderHandle {
     let builder = rp::ColliderBuilder::new(c.collider.shape.clone())
         .friction(c.friction.map_or(0.5, |f| f.0))
+        .friction_combine_rule(c.combine.copied().unwrap_or_default().rapier_rule())
         .restitution(c.restitution.map_or(0.0, |r| r.0));
     // A mass wins over a density (rapier keeps one of the two).
     let builder = match (c.mass, c.density) {
@@ -140,13 +142,14 @@ pub(crate) fn sync_changes(
     surfaces: Query<
         (
             &RapierCollider,
-            Option<&Friction>,
+            (Option<&Friction>, Option<&FrictionCombine>),
             Option<&Restitution>,
             Option<&ColliderMass>,
             Option<&Density>,
         ),
         Or<(
             Changed<Friction>,
+            Changed<FrictionCombine>,
             Changed<Restitution>,
             Changed<ColliderMass>,
             Changed<Density>,
@@ -170,9 +173,10 @@ pub(crate) fn sync_changes(
             c.set_shape(collider.shape.clone());
         }
     }
-    for (h, friction, restitution, mass, density) in &surfaces {
+    for (h, (friction, combine), restitution, mass, density) in &surfaces {
         if let Some(c) = w.physics.colliders.get_mut(h.0) {
             c.set_friction(friction.map_or(0.5, |f| f.0));
+            c.set_friction_combine_rule(combine.copied().unwrap_or_default().rapier_rule());
             c.set_restitution(restitution.map_or(0.0, |r| r.0));
             match (mass, density) {
                 (Some(m), _) => c.set_mass(m.0),

@@ -4,10 +4,11 @@
 //! from where it was once rapier formed the contact (its first two steps, in which plain
 //! rapier's own friction lets a box put down on a slope slip some 10 µm); above it (tan θ = 1.2 μ_k,
 //! with μ_k = μ_ba, and tan θ = 1.2 μ_ba with μ_k < μ_ba) it slides with the kinetic
-//! acceleration g (sin θ − μ_k cos θ) within 2 %.
+//! acceleration g (sin θ − μ_k cos θ) within 2 %. The box carries the ground's material.
 
 mod common;
 use common::*;
+use stickslip_bevy::FrictionLaw;
 
 const C: f64 = 1e5;
 const MU_BA: f64 = 0.5;
@@ -18,6 +19,10 @@ fn sticks_below_break_away_without_creep() {
     app.insert_resource(incline(0.9 * MU_BA));
     ground(&mut app, ep(C, MU_BA, 0.4));
     let b = part(&mut app, 0.0);
+    // The box carries the ground's material: the pair is that material's alone.
+    app.world_mut()
+        .entity_mut(b)
+        .insert(FrictionLaw::new(ep(C, MU_BA, 0.4)));
     steps(&mut app, 2);
     let (formed, _) = x_v(&app, b);
     steps(&mut app, 58);
@@ -44,6 +49,11 @@ fn kinetic_acceleration(mu_k: f64, tan: f64) {
     app.insert_resource(incline(tan));
     ground(&mut app, ep(C, MU_BA, mu_k));
     let b = part(&mut app, 0.0);
+    // The box carries the ground's material (unattached, its rapier friction 0.5 would
+    // combine with the material like rapier's coefficients).
+    app.world_mut()
+        .entity_mut(b)
+        .insert(FrictionLaw::new(ep(C, MU_BA, mu_k)));
     steps(&mut app, 60);
     let (_, v1) = x_v(&app, b);
     steps(&mut app, 120);

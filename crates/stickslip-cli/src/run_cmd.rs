@@ -157,6 +157,11 @@ pub fn run(args: &RunArgs, json: bool) -> Result<(), CliError> {
         && !json
         && std::io::stdout().is_terminal())
     .then(|| PathBuf::from("stickslip-showcase.rrd"));
+    if let Some(addr) = &connect {
+        // Fail fast (exit 2) instead of streaming into nothing.
+        let addr = (!addr.is_empty()).then_some(addr.as_str());
+        stickslip_rerun::check_reachable(addr, std::time::Duration::from_secs(3))?;
+    }
     let mut sinks = Vec::new();
     let pending = args
         .rrd

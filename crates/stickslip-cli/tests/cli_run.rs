@@ -4,7 +4,8 @@
 //! a failing run (malformed scenario, unwritable path) exits with code 2, names the field and
 //! line, and leaves no `.rrd`. With the PyPI `rerun` CLI (path in `STICKSLIP_RERUN_CLI`, set by
 //! `.ci/run`), rerun's own `rrd verify`/`rrd print` accept the file and a live stream reaches a
-//! receiving `rerun --test-receive`; without it those two tests print that they skipped.
+//! receiving `rerun --test-receive`; without it those two tests print that they skipped. A live
+//! stream to an address where no viewer listens exits 2 within seconds, before simulating.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -261,4 +262,28 @@ fn live_stream_reaches_a_receiving_viewer() {
         std::thread::sleep(Duration::from_millis(100));
     };
     assert!(status.success(), "receiver: {status}");
+}
+
+#[test]
+fn live_stream_to_an_unreachable_viewer_fails_fast() {
+    // A port nobody listens on: bind one, then free it.
+    let port = {
+        let l = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+        l.local_addr().unwrap().port()
+    };
+    let start = Instant::now();
+    let out = run(bin()
+        .arg("run")
+        .arg(scenario("belt_stick_slip"))
+        .args(["--steps", "100", "--json", "--connect"])
+        .arg(format!("127.0.0.1:{port}")));
+    let took = start.elapsed();
+    assert_eq!(out.status.code(), Some(2), "exit code");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("no rerun viewer is listening") && err.contains(&port.to_string()),
+        "{err}"
+    );
+    assert!(out.stdout.is_empty(), "nothing simulated: {:?}", out.stdout);
+    assert!(took < Duration::from_secs(20), "took {took:?}");
 }

@@ -835,6 +835,46 @@ mod tests {
     }
 
     #[test]
+    fn threads_creating_the_same_records_make_one_each() {
+        // Eight threads meet the same 2000 new manifolds (user_data 0: found by key only) at
+        // once; each manifold must end with one record, the same for every thread.
+        let store = ContactStore::default();
+        let keys: Vec<ContactKey> = (0..2000).map(|i| key(i, 5000)).collect();
+        let seen: Vec<Vec<u32>> = std::thread::scope(|s| {
+            let handles: Vec<_> = (0..8)
+                .map(|t| {
+                    let (store, keys) = (&store, &keys);
+                    s.spawn(move || {
+                        let mut out = vec![0; keys.len()];
+                        for k in 0..keys.len() {
+                            // Threads walk the keys in different orders.
+                            let i = (k + t * 251) % keys.len();
+                            let mut ud = 0;
+                            store.with_record(&mut ud, &keys[i], 1, |r, _, _| r.slide += 1.0);
+                            out[i] = ud;
+                        }
+                        out
+                    })
+                })
+                .collect();
+            handles.into_iter().map(|h| h.join().unwrap()).collect()
+        });
+        let mut store = store;
+        assert_eq!(store.len(), keys.len(), "records");
+        for ud in &seen[1..] {
+            assert_eq!(ud, &seen[0], "threads got different records");
+        }
+        let image = store.image();
+        let total: f32 = image
+            .slots
+            .iter()
+            .filter_map(|s| s.live.as_ref())
+            .map(|l| l.record.slide)
+            .sum();
+        assert_eq!(total, 8.0 * keys.len() as f32, "every update landed");
+    }
+
+    #[test]
     fn images_round_trip() {
         let mut store = ContactStore::default();
         let mut uds = [0u32; 5];

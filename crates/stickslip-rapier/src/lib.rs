@@ -66,7 +66,7 @@ mod warnings;
 
 pub use material::FrictionMaterial;
 pub use modifier::{
-    MAX_DT, MIN_DT, ReadBack, SWEEP_INTERVAL, StickSlip, StickSlipConfig, valid_dt,
+    MAX_DT, MIN_DT, NotReadBack, ReadBack, SWEEP_INTERVAL, StickSlip, StickSlipConfig, valid_dt,
 };
 pub use pair_law::{MAX_COMBINATIONS, combine_rule};
 pub use report::{ContactReport, WorldTotals};

@@ -175,3 +175,18 @@ pub(crate) type Combined = parking_lot::RwLock<HashMap<CombineKey, Law>>;
 
 /// Per-pair overrides.
 pub(crate) type PairMaterials = HashMap<(ColliderHandle, ColliderHandle), FrictionMaterial>;
+
+impl<H> StickSlip<H> {
+    /// The law stickslip gives the pair `(a, b)` of `colliders` (the pair's own material, or
+    /// the two sides combined; see [`StickSlip::attach`]); `None` when neither is attached
+    /// (the pair is rapier's and the wrapped hooks'). The same whichever is first.
+    pub fn pair_law(
+        &self,
+        colliders: &ColliderSet,
+        a: ColliderHandle,
+        b: ColliderHandle,
+    ) -> Option<Law> {
+        self.owns(a, b)
+            .then(|| self.with_pair_law(colliders, a, b, Law::clone))
+    }
+}

@@ -76,6 +76,18 @@ pub enum LogError {
     /// The sinks cannot be set up.
     #[error("cannot set up the rerun sinks: {0}")]
     Sinks(String),
+    /// No viewer accepts connections at a live stream's address (rerun's gRPC sink would
+    /// buffer and retry silently).
+    #[error(
+        "no rerun viewer is listening at {url} ({reason}); start one with `rerun`, or pass \
+         its address with --connect HOST:PORT"
+    )]
+    Unreachable {
+        /// The gRPC URL.
+        url: String,
+        /// What the connection attempt said.
+        reason: String,
+    },
     /// Flushing the sink failed (disk full, viewer gone, …).
     #[error("rerun sink failed to flush: {0}")]
     Flush(String),
@@ -92,6 +104,37 @@ pub fn grpc_url(addr: Option<&str>) -> String {
         Some(a) if a.contains("://") => a.to_string(),
         Some(a) => format!("rerun+http://{a}/proxy"),
     }
+}
+
+/// Checks that something accepts TCP connections at the gRPC address of `--connect ADDR`
+/// (see [`grpc_url`]) within `timeout`: rerun's gRPC sink never fails on an address where
+/// nobody listens, it buffers and retries, so a live stream to a mistyped address would run
+/// silently into nothing.
+pub fn check_reachable(addr: Option<&str>, timeout: std::time::Duration) -> Result<(), LogError> {
+    use std::net::{TcpStream, ToSocketAddrs};
+    let url = grpc_url(addr);
+    let unreachable = |reason: String| LogError::Unreachable {
+        url: url.clone(),
+        reason,
+    };
+    // scheme://HOST:PORT/path → HOST:PORT
+    let authority = url
+        .split_once("://")
+        .map_or(url.as_str(), |(_, rest)| rest)
+        .split('/')
+        .next()
+        .unwrap_or_default();
+    let targets = authority
+        .to_socket_addrs()
+        .map_err(|e| unreachable(format!("cannot resolve `{authority}`: {e}")))?;
+    let mut last = format!("`{authority}` resolves to no address");
+    for target in targets {
+        match TcpStream::connect_timeout(&target, timeout) {
+            Ok(_) => return Ok(()),
+            Err(e) => last = format!("{target}: {e}"),
+        }
+    }
+    Err(unreachable(last))
 }
 
 /// Opens a recording stream for `app_id` on `sink`, with the automatic `log_time` timeline
