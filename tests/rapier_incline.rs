@@ -31,7 +31,7 @@ fn ep() -> Law {
 /// rapier with collider friction `mu`), and the last friction report's (state μ, effective μ).
 fn creep(law: Option<Law>, theta: f64, mu: f32) -> (f64, Option<(f64, f64)>) {
     let scene = incline(theta);
-    let (mut world, body, ground) = (scene.world, scene.body, scene.ground);
+    let (mut world, body) = (scene.world, scene.body);
     for (_, c) in world.colliders.iter_mut() {
         c.set_friction(mu);
     }
