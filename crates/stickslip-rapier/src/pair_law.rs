@@ -94,7 +94,8 @@ impl<H> StickSlip<H> {
     }
 
     fn side(&self, colliders: &ColliderSet, h: ColliderHandle) -> (Side, CombineRule) {
-        let rule = colliders.get(h).map_or(CombineRule::Average, |c| {
+        let c = colliders.get(h);
+        let rule = c.map_or(CombineRule::Average, |c| {
             combine_rule(c.friction_combine_rule())
         });
         if self.attached.contains(h) {
@@ -103,7 +104,7 @@ impl<H> StickSlip<H> {
                 rule,
             )
         } else {
-            let mu = colliders.get(h).map_or(0.0, |c| c.friction());
+            let mu = c.map_or(0.0, |c| c.friction());
             (Side::Plain(mu.to_bits()), rule)
         }
     }
