@@ -27,6 +27,9 @@ install_rerun_cli() {
 }
 install_rerun_cli
 
+# The workspace includes stickslip-rapier-035 and stickslip-035: stickslip-rapier's sources and
+# the rapier test files (tests/rapier_*.rs, tests/ordinary_*.rs) built against rapier3d
+# 0.35.0-glamx0.2, the rapier bevy_rapier3d 0.36 pins, besides 0.36.1.
 cargo test --workspace
 # stickslip-bevy's optional parts: contact gizmos (`debug`) and scenario files as entities
 # (`scenario`), with their tests and doc tests (the window example is built by .ci/run).

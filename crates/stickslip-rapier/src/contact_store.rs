@@ -84,6 +84,10 @@ pub(crate) struct ContactRecord {
     /// Steps left (0–2) in which the solver is still forming the contact after a solve
     /// that started cold (see `contact_step`).
     pub forming: u8,
+    /// rapier 0.35 only: the warm-start impulse the manifold's points carried into the last
+    /// solve (summed), which 0.35 leaves in the impulse it reports (see `rapier_compat`).
+    #[cfg(rapier_035)]
+    pub warm_start_impulse: f32,
 }
 
 impl Default for ContactRecord {
@@ -97,6 +101,8 @@ impl Default for ContactRecord {
             mean_normal_force: 0.0,
             regime: u8::MAX,
             forming: 0,
+            #[cfg(rapier_035)]
+            warm_start_impulse: 0.0,
         }
     }
 }
@@ -181,6 +187,9 @@ struct Packed {
     /// Arena indices of the pair's colliders (a check that `user_data` is this pair's).
     c1: u32,
     c2: u32,
+    /// See `ContactRecord::warm_start_impulse`.
+    #[cfg(rapier_035)]
+    warm_start_impulse: f32,
 }
 
 /// What a slot holds: 36 bytes.
@@ -228,6 +237,8 @@ fn unpack(p: &Packed, slip: u16, meta: u16) -> ContactRecord {
         mean_normal_force: p.mean_normal_force,
         regime: unpack_regime(meta),
         forming: u8::from(meta & FORMING != 0) | u8::from(slip & SLIP_FORMING != 0) << 1,
+        #[cfg(rapier_035)]
+        warm_start_impulse: p.warm_start_impulse,
     }
 }
 
@@ -240,6 +251,8 @@ fn pack(r: &ContactRecord, c1: u32, c2: u32) -> (Packed, u16) {
             mean_normal_force: r.mean_normal_force,
             c1,
             c2,
+            #[cfg(rapier_035)]
+            warm_start_impulse: r.warm_start_impulse,
         },
         (to_bf16(r.slip_speed) & !SLIP_FORMING) | if r.forming & 2 != 0 { SLIP_FORMING } else { 0 },
     )
@@ -729,8 +742,10 @@ mod tests {
 
     #[test]
     fn a_slot_is_40_bytes() {
-        assert_eq!(std::mem::size_of::<SlotData>(), 36);
-        assert_eq!(std::mem::size_of::<Slot>(), 40);
+        // rapier 0.35 builds keep one f32 more (see `ContactRecord::warm_start_impulse`).
+        let extra = if cfg!(rapier_035) { 4 } else { 0 };
+        assert_eq!(std::mem::size_of::<SlotData>(), 36 + extra);
+        assert_eq!(std::mem::size_of::<Slot>(), 40 + extra);
     }
 
     #[test]
@@ -744,6 +759,8 @@ mod tests {
             mean_normal_force: 9.81,
             regime: 2,
             forming: 0,
+            #[cfg(rapier_035)]
+            warm_start_impulse: 0.0,
         };
         for regime in [0, 1, 2, u8::MAX, REGIME_RESET] {
             for forming in 0..=2 {

@@ -10,6 +10,8 @@ use crate::contact_step::{ContactInput, step_contact};
 use crate::contact_store::{ContactKey, ContactRecord, ManifoldPart};
 use crate::measure::{Measured, centroid, measure, point_velocity};
 use crate::modifier::StickSlip;
+#[cfg(rapier_035)]
+use crate::rapier_compat::RigidManifold;
 use crate::tangent::TangentBasis;
 use crate::warnings::Warning;
 use rapier3d::prelude::*;
@@ -182,7 +184,13 @@ impl<H: PhysicsHooks> StickSlip<H> {
         // ġ = v₂ − v₁ of the touching material points (relative to a moving surface).
         let slip = basis
             .project(point_velocity(bodies, rb2, p) - point_velocity(bodies, rb1, p) - surface);
-        let from_points = measure(m.manifold, m.solver_contacts, dt);
+        let from_points = measure(
+            m.manifold,
+            m.solver_contacts,
+            dt,
+            crate::rapier_compat::warm_before(rec),
+        );
+        crate::rapier_compat::remember_warm_start(rec, from_points.warm_start_impulse);
         // A patch measured after the last solve: what rapier carried over to the points it
         // solves now is its warm start.
         let (meas, warm_start) = match measured {

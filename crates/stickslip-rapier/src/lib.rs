@@ -55,6 +55,7 @@ mod material;
 mod measure;
 mod modifier;
 mod pair_law;
+mod rapier_compat;
 mod read_back;
 mod report;
 pub mod scenes;

@@ -10,6 +10,9 @@ pub(crate) struct Measured {
     pub normal_force: f64,
     /// Friction impulse over normal impulse of the last substep: μ⃗ with F_f(body 2) = −F_n μ⃗.
     pub mu: Vector,
+    /// The warm-start impulse the points carry now (summed): what the next solve starts
+    /// from (rapier 0.35 reports it inside the solve's impulse, see `rapier_compat`).
+    pub warm_start_impulse: f64,
 }
 
 /// Measures a manifold from the points its solver contacts stand for: before the solve
@@ -17,7 +20,14 @@ pub(crate) struct Measured {
 /// id, or by position into a cluster); after the solve, this solve's. Points the solver did not
 /// use may hold stale impulses and are skipped. Friction is one constraint per manifold
 /// (`FrictionModel::Simplified`), whose impulse rapier stores on each of its points.
-pub(crate) fn measure(m: &ContactManifold, contacts: &[SolverContact], dt: f64) -> Measured {
+/// `warm_before`: the warm-start impulse that solve started from, where known (only rapier
+/// 0.35 needs it).
+pub(crate) fn measure(
+    m: &ContactManifold,
+    contacts: &[SolverContact],
+    dt: f64,
+    warm_before: Option<f64>,
+) -> Measured {
     let (mut impulse, mut warm) = (0.0f64, 0.0f64);
     let mut friction = None;
     for c in contacts {
@@ -30,12 +40,14 @@ pub(crate) fn measure(m: &ContactManifold, contacts: &[SolverContact], dt: f64) 
             friction = Some(p.data.warmstart_tangent_world);
         }
     }
+    let impulse = crate::rapier_compat::solve_impulse(impulse, warm, warm_before);
     Measured {
         normal_force: if dt > 0.0 { impulse / dt } else { 0.0 },
         mu: match friction {
             Some(f) if warm > 0.0 => f / warm as f32,
             _ => Vector::ZERO,
         },
+        warm_start_impulse: warm,
     }
 }
 

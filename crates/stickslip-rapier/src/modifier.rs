@@ -525,7 +525,7 @@ impl<H> StickSlip<H> {
                 .find(|m| m.data.user_data == user_data)
             {
                 self.patches_measured
-                    .insert(user_data, measure(m, &m.data.solver_contacts, dt));
+                    .insert(user_data, measure(m, &m.data.solver_contacts, dt, None));
             }
         }
         if self.patches_measured.capacity() > 4 * self.patches_measured.len() + 64 {

@@ -32,7 +32,13 @@ pub(crate) fn report(
     } else {
         Vector::ZERO
     };
-    let meas = measure(m, &m.data.solver_contacts, dt);
+    // After the solve: the warm start it started from is the one the hook remembered.
+    let meas = measure(
+        m,
+        &m.data.solver_contacts,
+        dt,
+        crate::rapier_compat::warm_before(rec),
+    );
     let n = m.data.normal;
     let basis = TangentBasis::new(n);
     let slip = basis.tangential(

@@ -302,6 +302,9 @@ struct RecordSnapshot {
     regime: u8,
     /// Steps left in which the contact is still forming (0–2).
     forming: u8,
+    /// The warm start of the last solve (kept by rapier 0.35 builds only; 0 otherwise).
+    #[serde(default)]
+    warm_start_impulse: f32,
 }
 
 impl From<&LiveImage> for RecordSnapshot {
@@ -319,6 +322,10 @@ impl From<&LiveImage> for RecordSnapshot {
             touched_odd: l.touched_odd,
             regime: r.regime,
             forming: r.forming,
+            #[cfg(rapier_035)]
+            warm_start_impulse: r.warm_start_impulse,
+            #[cfg(not(rapier_035))]
+            warm_start_impulse: 0.0,
         }
     }
 }
@@ -333,6 +340,7 @@ impl RecordSnapshot {
                 self.limit,
                 self.slip_speed,
                 self.mean_normal_force,
+                self.warm_start_impulse,
             ])
             .all(|x| x.is_finite());
         if !finite {
@@ -372,6 +380,8 @@ impl RecordSnapshot {
                 mean_normal_force: self.mean_normal_force,
                 regime: self.regime,
                 forming: self.forming,
+                #[cfg(rapier_035)]
+                warm_start_impulse: self.warm_start_impulse,
             },
         })
     }

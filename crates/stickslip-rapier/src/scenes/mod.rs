@@ -109,6 +109,9 @@ pub struct Conveyor {
     pub velocity: Vector,
 }
 
+#[cfg(rapier_035)]
+use crate::rapier_compat::RigidManifold;
+
 impl PhysicsHooks for Conveyor {
     fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
         // tangent_velocity is the target velocity of collider 2 relative to collider 1.
