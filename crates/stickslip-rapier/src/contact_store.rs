@@ -3,16 +3,17 @@
 //! Lookup is cheap: a manifold's `user_data` holds its slot index (+1) and an 8-bit
 //! generation, so the hook reaches its record with one uncontended read lock and one
 //! per-slot lock (a one-byte `parking_lot` mutex), never a global map under one lock per
-//! contact.
+//! contact. Only manifolds whose `user_data` is 0 — new ones, and rapier's merged "cluster"
+//! manifolds whose `user_data` is reset every step — go through a map keyed by the collider
+//! pair and which of its manifolds it is ([`ManifoldPart`]); a manifold found through its
+//! `user_data` leaves that map, so at steady state it holds only the cluster manifolds.
 //!
-//! **Copy out, copy in.** [`ContactStore::with_record`] copies the record out under the slot's
-//! lock, runs the caller's code on the copy with no lock of the store held, and writes the
-//! copy back under the lock. The wrapped user hook and the law run there, so a panic in
-//! either leaves every lock free (the record keeps its last stored state; the next step
-//! works), and a slow user hook never blocks another thread's contact. Only manifolds whose `user_data` is 0 — new ones, and rapier's merged
-//! "cluster" manifolds whose `user_data` is reset every step — go through a map keyed by the
-//! collider pair and which of its manifolds it is ([`ManifoldPart`]); a manifold found through
-//! its `user_data` leaves that map, so at steady state it holds only the cluster manifolds.
+//! **Locking.** [`ContactStore::with_record`] runs the caller's code on a copy of the record
+//! while it holds the slot's lock, and stores the copy back when the code returns. The caller
+//! is stickslip's own per-manifold step only: the hook runs the wrapped user hook before,
+//! with no lock of stickslip's held, so a user hook that is slow or calls back never blocks
+//! another contact. A panic (the user hook's, or stickslip's own) leaves no lock held: the
+//! guards release on unwind, and an interrupted record keeps its last stored state.
 //!
 //! Rapier does not report vanished manifolds, so [`ContactStore::sweep`] drops every record
 //! not touched during the step: memory tracks the active contacts (manifolds of sleeping
@@ -263,6 +264,14 @@ fn with_state(meta: u16, r: &ContactRecord) -> u16 {
     (meta & !(REGIME_MASK | FORMING)) | pack_regime(r.regime) | forming
 }
 
+/// Whether slot data `d` is a live record of the pair `(c1, c2)` (of `generation`, if given).
+fn fits(d: &SlotData, c1: u32, c2: u32, generation: Option<u8>) -> bool {
+    d.meta & LIVE != 0
+        && generation.is_none_or(|g| g == generation_of(d.meta))
+        && d.packed.c1 == c1
+        && d.packed.c2 == c2
+}
+
 fn index_of(h: ColliderHandle) -> u32 {
     h.0.into_raw_parts().0
 }
@@ -336,79 +345,128 @@ impl ContactStore {
         step: u32,
         f: impl FnOnce(&mut ContactRecord, bool, u32) -> R,
     ) -> R {
-        let (index, new, mut rec) = self.checkout(user_data, key, step);
-        let ours = *user_data;
+        {
+            let slots = self.slots.read().unwrap_or_else(|e| e.into_inner());
+            if let Some((index, mut d)) = self.find(&slots, user_data, key) {
+                return self.run(index, &mut d, false, step, *user_data, f);
+            }
+        }
+        // New contact: allocate under the write lock (rare: only when contacts appear), then
+        // step it under the read lock like any other.
+        let (index, new) = self.create(user_data, key);
+        let slots = self.slots.read().unwrap_or_else(|e| e.into_inner());
+        match slots.get(index as usize) {
+            Some(slot) => self.run(index, &mut slot.0.lock(), new, step, *user_data, f),
+            // Unreachable: slots only go away through `&mut self`.
+            None => f(&mut ContactRecord::default(), true, *user_data),
+        }
+    }
+
+    /// The wrapped hook's own `user_data` kept for the manifold whose `user_data` (ours) is
+    /// `ours` and whose key is `key` (0 if none: also when `ours` is stale).
+    pub fn inner_user_data(&self, ours: u32, key: &ContactKey) -> u32 {
+        if !self.inner_used.load(Ordering::Relaxed) {
+            return 0;
+        }
+        let Some((index, generation)) = decode(ours) else {
+            return 0;
+        };
+        let slots = self.slots.read().unwrap_or_else(|e| e.into_inner());
+        let mine = slots.get(index as usize).is_some_and(|s| {
+            fits(
+                &s.0.lock(),
+                index_of(key.c1),
+                index_of(key.c2),
+                Some(generation),
+            )
+        });
+        if !mine {
+            return 0;
+        }
+        lock(&self.inner_data).get(&index).copied().unwrap_or(0)
+    }
+
+    /// Steps the record in the locked slot `d`: a copy, marked touched at `step`, goes to `f`
+    /// and is stored back when `f` returns (if `f` panics, the guard releases the slot and the
+    /// record keeps its last state).
+    fn run<R>(
+        &self,
+        index: u32,
+        d: &mut SlotData,
+        new: bool,
+        step: u32,
+        ours: u32,
+        f: impl FnOnce(&mut ContactRecord, bool, u32) -> R,
+    ) -> R {
+        d.meta = (d.meta & !TOUCHED) | parity(step);
+        let mut rec = unpack(&d.packed, d.slip_speed, d.meta);
         if self.inner_used.load(Ordering::Relaxed) {
             rec.inner_user_data = lock(&self.inner_data).get(&index).copied().unwrap_or(0);
         }
         let before = rec.inner_user_data;
-        // No lock of the store is held here (see the module docs).
         let out = f(&mut rec, new, ours);
-        self.store(index, ours, &rec, before, step);
+        let (c1, c2) = (d.packed.c1, d.packed.c2);
+        (d.packed, d.slip_speed) = pack(&rec, c1, c2);
+        d.meta = (with_state(d.meta, &rec) & !TOUCHED) | parity(step);
+        if rec.inner_user_data != before {
+            let mut map = lock(&self.inner_data);
+            if rec.inner_user_data == 0 {
+                map.remove(&index);
+            } else {
+                map.insert(index, rec.inner_user_data);
+                self.inner_used.store(true, Ordering::Relaxed);
+            }
+        }
         out
     }
 
-    /// The slot of the manifold with `key`, whether it was created now, and a copy of its
-    /// record, marked touched at `step` (found and copied under one lock); points `user_data`
-    /// at it.
-    fn checkout(
+    /// The locked slot of the manifold with `key`, found through `user_data` or the key map
+    /// (then `user_data` is pointed at it).
+    fn find<'s>(
         &self,
+        slots: &'s [Slot],
         user_data: &mut u32,
         key: &ContactKey,
-        step: u32,
-    ) -> (u32, bool, ContactRecord) {
+    ) -> Option<(u32, parking_lot::MutexGuard<'s, SlotData>)> {
         let (c1, c2) = (index_of(key.c1), index_of(key.c2));
-        // Whether `slot` is live, of this pair and (if given) of `generation`.
-        let fits = |d: &SlotData, generation: Option<u8>| {
-            d.meta & LIVE != 0
-                && generation.is_none_or(|g| g == generation_of(d.meta))
-                && d.packed.c1 == c1
-                && d.packed.c2 == c2
-        };
-        let copy_out = |d: &mut SlotData| {
-            d.meta = (d.meta & !TOUCHED) | parity(step);
-            unpack(&d.packed, d.slip_speed, d.meta)
-        };
+        if let Some((index, generation)) = decode(*user_data)
+            && let Some(slot) = slots.get(index as usize)
         {
-            let slots = self.slots.read().unwrap_or_else(|e| e.into_inner());
-            if let Some((index, generation)) = decode(*user_data)
-                && let Some(slot) = slots.get(index as usize)
-            {
-                let mut d = slot.0.lock();
-                if fits(&d, Some(generation)) {
-                    // Found through its user_data: the manifold keeps it, the key map can let
-                    // go.
-                    if d.meta & KEYED != 0 {
-                        let mut by_key = lock(&self.by_key);
-                        if by_key.get(key) == Some(&index) {
-                            by_key.remove(key);
-                            d.meta &= !KEYED;
-                        }
+            let mut d = slot.0.lock();
+            if fits(&d, c1, c2, Some(generation)) {
+                // Found through its user_data: the manifold keeps it, the key map can let go.
+                if d.meta & KEYED != 0 {
+                    let mut by_key = lock(&self.by_key);
+                    if by_key.get(key) == Some(&index) {
+                        by_key.remove(key);
+                        d.meta &= !KEYED;
                     }
-                    return (index, false, copy_out(&mut d));
                 }
-            }
-            let known = lock(&self.by_key).get(key).copied();
-            if let Some(index) = known
-                && let Some(slot) = slots.get(index as usize)
-            {
-                let mut d = slot.0.lock();
-                if fits(&d, None) {
-                    *user_data = encode(index, generation_of(d.meta));
-                    return (index, false, copy_out(&mut d));
-                }
+                return Some((index, d));
             }
         }
-        // New contact: allocate under the write lock (rare: only when contacts appear).
+        let index = lock(&self.by_key).get(key).copied()?;
+        let d = slots.get(index as usize)?.0.lock();
+        if !fits(&d, c1, c2, None) {
+            return None;
+        }
+        *user_data = encode(index, generation_of(d.meta));
+        Some((index, d))
+    }
+
+    /// The slot for a new manifold with `key` (and whether it is new: another thread may have
+    /// made it since the caller looked, which the key map, read again under the write lock,
+    /// tells); points `user_data` at it.
+    fn create(&self, user_data: &mut u32, key: &ContactKey) -> (u32, bool) {
+        let (c1, c2) = (index_of(key.c1), index_of(key.c2));
         let mut slots = self.slots.write().unwrap_or_else(|e| e.into_inner());
-        // Another thread may have created this manifold's record since the read above.
         let known = lock(&self.by_key).get(key).copied();
         if let Some(index) = known
             && let Some(slot) = slots.get_mut(index as usize)
-            && fits(slot.data(), None)
+            && fits(slot.data(), c1, c2, None)
         {
             *user_data = encode(index, generation_of(slot.data().meta));
-            return (index, false, copy_out(slot.data()));
+            return (index, false);
         }
         let index = match lock(&self.free).pop() {
             Some(Reverse(i)) => i,
@@ -435,37 +493,10 @@ impl ContactStore {
             slip_speed: 0,
             meta: LIVE | KEYED | pack_regime(u8::MAX) | (generation as u16) << GENERATION_SHIFT,
         };
-        let rec = copy_out(d);
         lock(&self.by_key).insert(*key, index);
         lock(&self.inner_data).remove(&index);
         *user_data = encode(index, generation);
-        (index, true, rec)
-    }
-
-    /// Writes `rec` back into slot `index` if it still holds the record `ours` points at.
-    fn store(&self, index: u32, ours: u32, rec: &ContactRecord, inner_before: u32, step: u32) {
-        let slots = self.slots.read().unwrap_or_else(|e| e.into_inner());
-        let Some(slot) = slots.get(index as usize) else {
-            return;
-        };
-        {
-            let mut d = slot.0.lock();
-            if d.meta & LIVE == 0 || Some((index, generation_of(d.meta))) != decode(ours) {
-                return;
-            }
-            let (c1, c2) = (d.packed.c1, d.packed.c2);
-            (d.packed, d.slip_speed) = pack(rec, c1, c2);
-            d.meta = (with_state(d.meta, rec) & !TOUCHED) | parity(step);
-        }
-        if rec.inner_user_data != inner_before {
-            let mut map = lock(&self.inner_data);
-            if rec.inner_user_data == 0 {
-                map.remove(&index);
-            } else {
-                map.insert(index, rec.inner_user_data);
-                self.inner_used.store(true, Ordering::Relaxed);
-            }
-        }
+        (index, true)
     }
 
     /// Drops every record not touched at `step`, cuts free slots off the end and gives back
@@ -877,12 +908,11 @@ mod tests {
         for ud in &seen[1..] {
             assert_eq!(ud, &seen[0], "threads got different records");
         }
-        // Copy out, copy in: two threads on one record keep one of their updates, whole
-        // (rapier never gives one manifold to two threads; the test does, on purpose).
+        // Two threads on one record (rapier never gives one manifold to two threads; the test
+        // does, on purpose) take turns: every update lands.
         let image = store.image();
         for l in image.slots.iter().filter_map(|s| s.live.as_ref()) {
-            let n = l.record.slide;
-            assert!((1.0..=8.0).contains(&n) && n.fract() == 0.0, "slide {n}");
+            assert_eq!(l.record.slide, 8.0);
         }
     }
 

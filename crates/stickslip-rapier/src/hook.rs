@@ -114,16 +114,18 @@ impl<H: PhysicsHooks> PhysicsHooks for StickSlip<H> {
         let key = key(ctx, manifold, self.clock.clustering);
         let Some(rigid) = ctx.rigid() else { return };
         let mut user_data = *rigid.user_data;
+        // The wrapped hook first, with no lock of stickslip's held, on its own user_data.
+        let inner_before = self.store.inner_user_data(user_data, &key);
+        if let Some(r) = ctx.rigid_mut() {
+            *r.user_data = inner_before;
+        }
+        self.inner.modify_solver_contacts(ctx);
+        let inner_after = ctx.rigid().map_or(inner_before, |r| *r.user_data);
         let step = self.clock.mark();
-        // The manifold's user_data is ours; the inner hook sees its own value.
         self.store
             .with_record(&mut user_data, &key, step, |rec, _, ours| {
+                rec.inner_user_data = inner_after;
                 if let Some(r) = ctx.rigid_mut() {
-                    *r.user_data = rec.inner_user_data;
-                }
-                self.inner.modify_solver_contacts(ctx);
-                if let Some(r) = ctx.rigid_mut() {
-                    rec.inner_user_data = *r.user_data;
                     *r.user_data = ours;
                 }
                 let patch = matches!(key.part, ManifoldPart::Cluster(_));
