@@ -1,0 +1,224 @@
+//! stickslip as an add-on to bevy_rapier3d 0.36 (bevy 0.19): a bevy_rapier app keeps its
+//! `RapierPhysicsPlugin`, components and systems, and gets stickslip's friction on the
+//! colliders it marks with [`StickSlipFriction`].
+//!
+//! ```no_run
+//! use bevy::prelude::*;
+//! use bevy_rapier3d::prelude::*;
+//! use stickslip_bevy_rapier::{StickSlipFriction, StickSlipHooks, StickSlipRapierPlugin};
+//!
+//! App::new()
+//!     .add_plugins(MinimalPlugins)
+//!     .add_plugins(TransformPlugin)
+//!     // bevy_rapier with stickslip's hooks, stepped one rapier step per frame.
+//!     .insert_resource(TimestepMode::Fixed { dt: 1.0 / 60.0, substeps: 1 })
+//!     .add_plugins(RapierPhysicsPlugin::<StickSlipHooks>::default())
+//!     .add_plugins(StickSlipRapierPlugin::default())
+//!     .add_systems(Startup, |mut commands: Commands| {
+//!         commands.spawn((RigidBody::Fixed, Collider::cuboid(5.0, 0.1, 5.0), StickSlipFriction(None)));
+//!     })
+//!     .run();
+//! ```
+//!
+//! What this first version does and does not: every rapier step is bracketed by
+//! `StickSlip::begin_step`/`end_step` when bevy_rapier runs exactly one rapier step per frame
+//! (`TimestepMode::Fixed` or `Variable` with `substeps: 1`); any other mode is refused at
+//! startup with an error message, and stickslip then leaves the world to rapier's friction
+//! (never silently wrong). A user's own `BevyPhysicsHooks` cannot be combined with these
+//! hooks yet.
+
+#![warn(missing_docs)]
+
+use bevy::ecs::schedule::ScheduleLabel;
+use bevy::ecs::system::SystemParam;
+use bevy::prelude::*;
+use bevy_rapier3d::pipeline::ContactModificationContextView;
+use bevy_rapier3d::plugin::context::{
+    RapierContextColliders, RapierContextSimulation, RapierRigidBodySet,
+};
+use bevy_rapier3d::prelude::*;
+use bevy_rapier3d::rapier::geometry::ColliderHandle;
+use bevy_rapier3d::rapier::pipeline::PhysicsHooks;
+use std::collections::HashMap;
+use stickslip_rapier_035::{FrictionMaterial, StickSlip};
+
+/// Puts a collider under stickslip: its pairs get stickslip's friction, with this material
+/// (`None`: the plugin's default material).
+#[derive(Component, Debug, Clone, PartialEq)]
+pub struct StickSlipFriction(pub Option<FrictionMaterial>);
+
+/// The modifier of the app's rapier context.
+#[derive(Resource)]
+pub struct StickSlipRapier {
+    /// The contact modifier (materials, vibration sources, contact state, reports).
+    pub modifier: StickSlip,
+    /// Whether the timestep mode can be bracketed (checked at startup).
+    pub active: bool,
+    attached: HashMap<Entity, ColliderHandle>,
+}
+
+impl StickSlipRapier {
+    /// Whether the collider of `entity` is attached to stickslip.
+    pub fn is_attached(&self, entity: Entity) -> bool {
+        self.attached.contains_key(&entity)
+    }
+}
+
+/// bevy_rapier's hooks for stickslip: `RapierPhysicsPlugin::<StickSlipHooks>`.
+#[derive(SystemParam)]
+pub struct StickSlipHooks<'w> {
+    state: Res<'w, StickSlipRapier>,
+}
+
+impl BevyPhysicsHooks for StickSlipHooks<'_> {
+    fn modify_solver_contacts(&self, context: ContactModificationContextView) {
+        self.state.modifier.modify_solver_contacts(context.raw);
+    }
+}
+
+/// Adds stickslip to a bevy_rapier app (see the crate docs).
+pub struct StickSlipRapierPlugin {
+    /// The material of colliders marked `StickSlipFriction(None)`.
+    pub default_material: FrictionMaterial,
+    /// The schedule bevy_rapier's physics systems run in (`PostUpdate` unless the app chose
+    /// another with `RapierPhysicsPlugin::in_schedule`): stickslip's bracketing runs there.
+    pub schedule: bevy::ecs::intern::Interned<dyn ScheduleLabel>,
+}
+
+impl Default for StickSlipRapierPlugin {
+    fn default() -> Self {
+        use stickslip_core::law::Law;
+        use stickslip_core::sliding_curve::Curve;
+        // EP, c 1e5 1/m, μ_ba 0.5 = μ_max = μ_ve: rapier's default coefficient, sticking.
+        let law = Curve::constant(0.5)
+            .and_then(|c| Law::elasto_plastic(1e5, 0.5, 0.5, c))
+            .unwrap_or_else(|_| Law::Coulomb(stickslip_core::law::Coulomb::clamped(0.5)));
+        StickSlipRapierPlugin {
+            default_material: FrictionMaterial::new(law),
+            schedule: PostUpdate.intern(),
+        }
+    }
+}
+
+impl Plugin for StickSlipRapierPlugin {
+    fn build(&self, app: &mut App) {
+        app.insert_resource(StickSlipRapier {
+            modifier: StickSlip::new(self.default_material.clone()),
+            active: true,
+            attached: HashMap::new(),
+        })
+        .add_systems(PostStartup, check_timestep_mode)
+        .add_systems(
+            self.schedule,
+            (attach, begin_step)
+                .chain()
+                .after(PhysicsSet::SyncBackend)
+                .before(PhysicsSet::StepSimulation),
+        )
+        .add_systems(
+            self.schedule,
+            end_step
+                .after(PhysicsSet::StepSimulation)
+                .before(PhysicsSet::Writeback),
+        );
+    }
+}
+
+/// Refuses (with an error) the timestep modes whose rapier steps cannot be bracketed.
+fn check_timestep_mode(mode: Res<TimestepMode>, mut state: ResMut<StickSlipRapier>) {
+    let ok = matches!(
+        *mode,
+        TimestepMode::Fixed { substeps: 1, .. } | TimestepMode::Variable { substeps: 1, .. }
+    );
+    if !ok {
+        error!(
+            "stickslip: bevy_rapier's {:?} runs several rapier steps per frame, which stickslip \
+             cannot bracket yet; use TimestepMode::Fixed or Variable with substeps: 1. stickslip \
+             is off: this app has rapier's own friction",
+            *mode
+        );
+        state.active = false;
+    }
+}
+
+/// Attaches marked colliders once bevy_rapier created them; detaches removed ones.
+#[allow(clippy::type_complexity)]
+fn attach(
+    mut commands: Commands,
+    mut state: ResMut<StickSlipRapier>,
+    marked: Query<
+        (
+            Entity,
+            &StickSlipFriction,
+            &RapierColliderHandle,
+            Option<&ActiveHooks>,
+        ),
+        Or<(Added<RapierColliderHandle>, Changed<StickSlipFriction>)>,
+    >,
+    mut removed: RemovedComponents<StickSlipFriction>,
+    mut colliders: Query<&mut RapierContextColliders>,
+) {
+    let Ok(mut colliders) = colliders.single_mut() else {
+        return;
+    };
+    let state = &mut *state;
+    for entity in removed.read() {
+        if let Some(h) = state.attached.remove(&entity) {
+            state.modifier.detach(&mut colliders.colliders, h);
+        }
+    }
+    for (entity, friction, handle, hooks) in &marked {
+        state
+            .modifier
+            .attach(&mut colliders.colliders, handle.0, friction.0.clone());
+        state.attached.insert(entity, handle.0);
+        // bevy_rapier writes a collider's hook flags from this component: keep the user's.
+        let flags = hooks.copied().unwrap_or(ActiveHooks::empty());
+        commands
+            .entity(entity)
+            .insert(flags | ActiveHooks::MODIFY_SOLVER_CONTACTS);
+    }
+}
+
+/// The step's parameters, as bevy_rapier's step will use them.
+fn begin_step(
+    mut state: ResMut<StickSlipRapier>,
+    mode: Res<TimestepMode>,
+    time: Res<Time>,
+    context: Query<&RapierContextSimulation>,
+) {
+    if !state.active {
+        return;
+    }
+    let Ok(context) = context.single() else {
+        return;
+    };
+    let mut params = context.integration_parameters;
+    params.dt = match *mode {
+        TimestepMode::Fixed { dt, .. } => dt,
+        TimestepMode::Variable {
+            max_dt, time_scale, ..
+        } => (time.delta_secs() * time_scale).min(max_dt),
+        TimestepMode::Interpolated { .. } => return,
+    };
+    state.modifier.begin_step(&params);
+}
+
+fn end_step(
+    mut state: ResMut<StickSlipRapier>,
+    context: Query<(
+        &RapierContextSimulation,
+        &RapierRigidBodySet,
+        &RapierContextColliders,
+    )>,
+) {
+    if !state.active {
+        return;
+    }
+    let Ok((sim, bodies, colliders)) = context.single() else {
+        return;
+    };
+    state
+        .modifier
+        .end_step(&sim.narrow_phase, &bodies.bodies, &colliders.colliders);
+}
