@@ -24,21 +24,24 @@
 //! `StickSlip::begin_step`/`end_step` when bevy_rapier runs exactly one rapier step per frame
 //! (`TimestepMode::Fixed` or `Variable` with `substeps: 1`); any other mode is refused at
 //! startup with an error message, and stickslip then leaves the world to rapier's friction
-//! (never silently wrong). A user's own `BevyPhysicsHooks` cannot be combined with these
-//! hooks yet.
+//! (never silently wrong). The app's own `BevyPhysicsHooks` go in as
+//! `StickSlipHooks<TheirHooks>` (see [`StickSlipHooks`]).
 
 #![warn(missing_docs)]
 
 use bevy::ecs::schedule::ScheduleLabel;
-use bevy::ecs::system::SystemParam;
+use bevy::ecs::system::{StaticSystemParam, SystemParam, SystemParamItem};
 use bevy::prelude::*;
-use bevy_rapier3d::pipeline::ContactModificationContextView;
+use bevy_rapier3d::pipeline::{ContactModificationContextView, PairFilterContextView};
 use bevy_rapier3d::plugin::context::{
     RapierContextColliders, RapierContextSimulation, RapierRigidBodySet,
 };
 use bevy_rapier3d::prelude::*;
 use bevy_rapier3d::rapier::geometry::ColliderHandle;
-use bevy_rapier3d::rapier::pipeline::PhysicsHooks;
+use bevy_rapier3d::rapier::geometry::SolverFlags;
+use bevy_rapier3d::rapier::pipeline::{
+    ContactModificationContext, PairFilterContext, PhysicsHooks,
+};
 use std::collections::HashMap;
 use stickslip_rapier_035::{FrictionMaterial, StickSlip};
 
@@ -64,15 +67,53 @@ impl StickSlipRapier {
     }
 }
 
-/// bevy_rapier's hooks for stickslip: `RapierPhysicsPlugin::<StickSlipHooks>`.
+/// bevy_rapier's hooks for stickslip: `RapierPhysicsPlugin::<StickSlipHooks>`, or
+/// `RapierPhysicsPlugin::<StickSlipHooks<MyHooks>>` with the app's own `BevyPhysicsHooks`
+/// (a one-way platform, a conveyor): they run first on every pair and alone on the pairs
+/// without a `StickSlipFriction` collider.
 #[derive(SystemParam)]
-pub struct StickSlipHooks<'w> {
+pub struct StickSlipHooks<'w, 's, H: SystemParam + 'static = ()> {
     state: Res<'w, StickSlipRapier>,
+    user: StaticSystemParam<'w, 's, H>,
 }
 
-impl BevyPhysicsHooks for StickSlipHooks<'_> {
+/// The app's hooks as rapier hooks (for the time of one call).
+struct UserHooks<'a, T>(&'a T);
+
+impl<T: BevyPhysicsHooks> PhysicsHooks for UserHooks<'_, T> {
+    fn filter_contact_pair(&self, context: &PairFilterContext) -> Option<SolverFlags> {
+        self.0
+            .filter_contact_pair(PairFilterContextView { raw: context })
+    }
+
+    fn filter_intersection_pair(&self, context: &PairFilterContext) -> bool {
+        self.0
+            .filter_intersection_pair(PairFilterContextView { raw: context })
+    }
+
+    fn modify_solver_contacts(&self, context: &mut ContactModificationContext) {
+        self.0
+            .modify_solver_contacts(ContactModificationContextView { raw: context })
+    }
+}
+
+impl<H> BevyPhysicsHooks for StickSlipHooks<'_, '_, H>
+where
+    H: SystemParam + 'static,
+    for<'w, 's> SystemParamItem<'w, 's, H>: BevyPhysicsHooks,
+{
+    fn filter_contact_pair(&self, context: PairFilterContextView) -> Option<SolverFlags> {
+        (*self.user).filter_contact_pair(context)
+    }
+
+    fn filter_intersection_pair(&self, context: PairFilterContextView) -> bool {
+        (*self.user).filter_intersection_pair(context)
+    }
+
     fn modify_solver_contacts(&self, context: ContactModificationContextView) {
-        self.state.modifier.modify_solver_contacts(context.raw);
+        self.state
+            .modifier
+            .modify_solver_contacts_with(context.raw, &UserHooks(&*self.user));
     }
 }
 

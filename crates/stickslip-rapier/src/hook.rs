@@ -71,9 +71,23 @@ impl<H: PhysicsHooks> PhysicsHooks for StickSlip<H> {
     }
 
     fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
+        self.modify_solver_contacts_with(ctx, &self.inner);
+    }
+}
+
+impl<H> StickSlip<H> {
+    /// stickslip's `modify_solver_contacts` with `inner` as the wrapped hooks instead of the
+    /// modifier's own (for integrations whose user hooks only exist during a step, such as
+    /// bevy_rapier's `BevyPhysicsHooks`): pairs stickslip does not own go to `inner` alone; on
+    /// its pairs `inner` runs first, on its own `user_data`.
+    pub fn modify_solver_contacts_with<I: PhysicsHooks + ?Sized>(
+        &self,
+        ctx: &mut ContactModificationContext,
+        inner: &I,
+    ) {
         // Pairs without an attached collider are the user's alone.
         if !self.owns(ctx.collider1, ctx.collider2) {
-            self.inner.modify_solver_contacts(ctx);
+            inner.modify_solver_contacts(ctx);
             return;
         }
         if !self.clock.open {
@@ -84,11 +98,11 @@ impl<H: PhysicsHooks> PhysicsHooks for StickSlip<H> {
                  before and end_step after every PhysicsPipeline::step, or use \
                  StickSlip::step)",
             );
-            self.inner.modify_solver_contacts(ctx);
+            inner.modify_solver_contacts(ctx);
             return;
         }
         let Some(rigid) = ctx.rigid() else {
-            self.inner.modify_solver_contacts(ctx);
+            inner.modify_solver_contacts(ctx);
             return;
         };
         let manifold = rigid.manifold;
@@ -96,7 +110,7 @@ impl<H: PhysicsHooks> PhysicsHooks for StickSlip<H> {
         // prediction distance, not touching) has nothing for the law: no record is made
         // unless the wrapped hook keeps a value in its user_data.
         if rigid.solver_contacts.is_empty() && *rigid.user_data == 0 {
-            self.inner.modify_solver_contacts(ctx);
+            inner.modify_solver_contacts(ctx);
             let key = key(ctx, manifold, self.clock.clustering);
             let Some(r) = ctx.rigid_mut() else { return };
             let inner_data = *r.user_data;
@@ -119,7 +133,7 @@ impl<H: PhysicsHooks> PhysicsHooks for StickSlip<H> {
         if let Some(r) = ctx.rigid_mut() {
             *r.user_data = inner_before;
         }
-        self.inner.modify_solver_contacts(ctx);
+        inner.modify_solver_contacts(ctx);
         let inner_after = ctx.rigid().map_or(inner_before, |r| *r.user_data);
         let step = self.clock.mark();
         self.store
@@ -141,7 +155,7 @@ impl<H: PhysicsHooks> PhysicsHooks for StickSlip<H> {
     }
 }
 
-impl<H: PhysicsHooks> StickSlip<H> {
+impl<H> StickSlip<H> {
     /// `measured`: the last solve at this manifold, if `end_step` measured it (a contact
     /// patch of a composite shape); otherwise it is read from the manifold's points.
     fn apply(
