@@ -43,12 +43,39 @@ use bevy_rapier3d::rapier::pipeline::{
     ContactModificationContext, PairFilterContext, PhysicsHooks,
 };
 use std::collections::HashMap;
-use stickslip_rapier_035::{FrictionMaterial, StickSlip};
+use stickslip_rapier_035::{ContactReport, FrictionMaterial, StickSlip, VibrationSource};
 
 /// Puts a collider under stickslip: its pairs get stickslip's friction, with this material
 /// (`None`: the plugin's default material).
 #[derive(Component, Debug, Clone, PartialEq)]
 pub struct StickSlipFriction(pub Option<FrictionMaterial>);
+
+/// A vibration source on a stickslip collider: its contacts feel it (Popov's reduced static
+/// and sliding friction, elliptical drives; see `stickslip_rapier::VibrationSource`).
+#[derive(Component, Debug, Clone)]
+pub struct StickSlipVibration(pub VibrationSource);
+
+/// The velocity of a collider's surface relative to its body (a conveyor belt, m/s, world
+/// axes): its contacts' target tangent velocity, on any pair (with or without stickslip).
+#[derive(Component, Debug, Clone, Copy, PartialEq)]
+pub struct SurfaceVelocity(pub Vec3);
+
+/// A contact read back after the step (with `ReadBack::Contacts` on the modifier), its
+/// colliders as entities.
+#[derive(Debug, Clone, Copy)]
+pub struct EntityContact {
+    /// The entity of the report's collider 1.
+    pub entity1: Entity,
+    /// The entity of the report's collider 2.
+    pub entity2: Entity,
+    /// What stickslip measured (regime, forces, slip, …).
+    pub report: ContactReport,
+}
+
+/// The contacts of the last step, as entities (empty unless the modifier reads contacts back:
+/// `StickSlipRapier::modifier.set_read_back(ReadBack::Contacts)`).
+#[derive(Resource, Debug, Default)]
+pub struct StickSlipContacts(pub Vec<EntityContact>);
 
 /// The modifier of the app's rapier context.
 #[derive(Resource)]
@@ -58,6 +85,8 @@ pub struct StickSlipRapier {
     /// Whether the timestep mode can be bracketed (checked at startup).
     pub active: bool,
     attached: HashMap<Entity, ColliderHandle>,
+    /// Surface velocities by collider.
+    surfaces: HashMap<ColliderHandle, Vec3>,
 }
 
 impl StickSlipRapier {
@@ -77,23 +106,40 @@ pub struct StickSlipHooks<'w, 's, H: SystemParam + 'static = ()> {
     user: StaticSystemParam<'w, 's, H>,
 }
 
-/// The app's hooks as rapier hooks (for the time of one call).
-struct UserHooks<'a, T>(&'a T);
+/// The app's hooks as rapier hooks (for the time of one call), then the surface velocities.
+struct UserHooks<'a, T> {
+    user: &'a T,
+    surfaces: &'a HashMap<ColliderHandle, Vec3>,
+}
 
 impl<T: BevyPhysicsHooks> PhysicsHooks for UserHooks<'_, T> {
     fn filter_contact_pair(&self, context: &PairFilterContext) -> Option<SolverFlags> {
-        self.0
+        self.user
             .filter_contact_pair(PairFilterContextView { raw: context })
     }
 
     fn filter_intersection_pair(&self, context: &PairFilterContext) -> bool {
-        self.0
+        self.user
             .filter_intersection_pair(PairFilterContextView { raw: context })
     }
 
     fn modify_solver_contacts(&self, context: &mut ContactModificationContext) {
-        self.0
-            .modify_solver_contacts(ContactModificationContextView { raw: context })
+        let (c1, c2) = (context.collider1, context.collider2);
+        self.user
+            .modify_solver_contacts(ContactModificationContextView { raw: &mut *context });
+        if self.surfaces.is_empty() {
+            return;
+        }
+        // tangent_velocity is the target velocity of collider 2 relative to collider 1.
+        let v = self.surfaces.get(&c1).copied().unwrap_or(Vec3::ZERO)
+            - self.surfaces.get(&c2).copied().unwrap_or(Vec3::ZERO);
+        if v != Vec3::ZERO {
+            let n = *context.normal;
+            let v = v - n * n.dot(v);
+            for c in context.solver_contacts.iter_mut() {
+                c.tangent_velocity += v;
+            }
+        }
     }
 }
 
@@ -111,9 +157,13 @@ where
     }
 
     fn modify_solver_contacts(&self, context: ContactModificationContextView) {
+        let inner = UserHooks {
+            user: &*self.user,
+            surfaces: &self.state.surfaces,
+        };
         self.state
             .modifier
-            .modify_solver_contacts_with(context.raw, &UserHooks(&*self.user));
+            .modify_solver_contacts_with(context.raw, &inner);
     }
 }
 
@@ -147,11 +197,13 @@ impl Plugin for StickSlipRapierPlugin {
             modifier: StickSlip::new(self.default_material.clone()),
             active: true,
             attached: HashMap::new(),
+            surfaces: HashMap::new(),
         })
+        .init_resource::<StickSlipContacts>()
         .add_systems(PostStartup, check_timestep_mode)
         .add_systems(
             self.schedule,
-            (attach, begin_step)
+            (attach, sync_vibrations, sync_surfaces, begin_step)
                 .chain()
                 .after(PhysicsSet::SyncBackend)
                 .before(PhysicsSet::StepSimulation),
@@ -247,6 +299,7 @@ fn begin_step(
 
 fn end_step(
     mut state: ResMut<StickSlipRapier>,
+    mut contacts: ResMut<StickSlipContacts>,
     context: Query<(
         &RapierContextSimulation,
         &RapierRigidBodySet,
@@ -262,4 +315,68 @@ fn end_step(
     state
         .modifier
         .end_step(&sim.narrow_phase, &bodies.bodies, &colliders.colliders);
+    contacts.0.clear();
+    // bevy_rapier keeps each collider's entity in its user_data.
+    let entity = |h: ColliderHandle| {
+        colliders
+            .colliders
+            .get(h)
+            .map(|c| Entity::from_bits(c.user_data as u64))
+    };
+    if let Ok(reports) = state.modifier.reports() {
+        for r in reports {
+            if let (Some(entity1), Some(entity2)) = (entity(r.collider1), entity(r.collider2)) {
+                contacts.0.push(EntityContact {
+                    entity1,
+                    entity2,
+                    report: *r,
+                });
+            }
+        }
+    }
+}
+
+/// Vibration sources onto the colliders' contacts (and off again).
+#[allow(clippy::type_complexity)]
+fn sync_vibrations(
+    mut state: ResMut<StickSlipRapier>,
+    changed: Query<
+        (&StickSlipVibration, &RapierColliderHandle),
+        Or<(Changed<StickSlipVibration>, Added<RapierColliderHandle>)>,
+    >,
+    all: Query<&RapierColliderHandle>,
+    mut removed: RemovedComponents<StickSlipVibration>,
+) {
+    for (v, h) in &changed {
+        state.modifier.set_vibration(h.0, v.0.clone());
+    }
+    for entity in removed.read() {
+        if let Ok(h) = all.get(entity) {
+            state.modifier.remove_vibration(h.0);
+        }
+    }
+}
+
+/// Surface velocities for the hooks (and `ActiveHooks` on their colliders).
+#[allow(clippy::type_complexity)]
+fn sync_surfaces(
+    mut commands: Commands,
+    mut state: ResMut<StickSlipRapier>,
+    surfaces: Query<(
+        Entity,
+        &SurfaceVelocity,
+        &RapierColliderHandle,
+        Option<&ActiveHooks>,
+    )>,
+) {
+    state.surfaces.clear();
+    for (entity, v, h, hooks) in &surfaces {
+        state.surfaces.insert(h.0, v.0);
+        let flags = hooks.copied().unwrap_or(ActiveHooks::empty());
+        if !flags.contains(ActiveHooks::MODIFY_SOLVER_CONTACTS) {
+            commands
+                .entity(entity)
+                .insert(flags | ActiveHooks::MODIFY_SOLVER_CONTACTS);
+        }
+    }
 }
