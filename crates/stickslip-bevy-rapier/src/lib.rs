@@ -43,6 +43,7 @@ use bevy_rapier3d::rapier::pipeline::{
     ContactModificationContext, PairFilterContext, PhysicsHooks,
 };
 use std::collections::HashMap;
+use stickslip_core::law::Regime;
 use stickslip_rapier_035::{ContactReport, FrictionMaterial, StickSlip, VibrationSource};
 
 /// Puts a collider under stickslip: its pairs get stickslip's friction, with this material
@@ -76,6 +77,25 @@ pub struct EntityContact {
 /// `StickSlipRapier::modifier.set_read_back(ReadBack::Contacts)`).
 #[derive(Resource, Debug, Default)]
 pub struct StickSlipContacts(pub Vec<EntityContact>);
+
+/// A pair of entities whose contact changed regime (sticking, stick-slip, sliding) in the
+/// last step, or began (with contact read-back on). A pair with several manifolds counts as
+/// one contact: its first manifold's regime.
+#[derive(Message, Debug, Clone, Copy, PartialEq)]
+pub struct RegimeChanged {
+    /// The entity of the first collider.
+    pub entity1: Entity,
+    /// The entity of the second collider.
+    pub entity2: Entity,
+    /// The regime before (`None`: a new contact).
+    pub from: Option<Regime>,
+    /// The regime now.
+    pub to: Regime,
+}
+
+/// The regime of each pair in the last step (for [`RegimeChanged`]).
+#[derive(Resource, Default)]
+struct LastRegimes(HashMap<(Entity, Entity), Regime>);
 
 /// The modifier of the app's rapier context.
 #[derive(Resource)]
@@ -200,6 +220,8 @@ impl Plugin for StickSlipRapierPlugin {
             surfaces: HashMap::new(),
         })
         .init_resource::<StickSlipContacts>()
+        .init_resource::<LastRegimes>()
+        .add_message::<RegimeChanged>()
         .add_systems(PostStartup, check_timestep_mode)
         .add_systems(
             self.schedule,
@@ -300,6 +322,8 @@ fn begin_step(
 fn end_step(
     mut state: ResMut<StickSlipRapier>,
     mut contacts: ResMut<StickSlipContacts>,
+    mut last: ResMut<LastRegimes>,
+    mut changed: MessageWriter<RegimeChanged>,
     context: Query<(
         &RapierContextSimulation,
         &RapierRigidBodySet,
@@ -323,17 +347,34 @@ fn end_step(
             .get(h)
             .map(|c| Entity::from_bits(c.user_data as u64))
     };
-    if let Ok(reports) = state.modifier.reports() {
-        for r in reports {
-            if let (Some(entity1), Some(entity2)) = (entity(r.collider1), entity(r.collider2)) {
-                contacts.0.push(EntityContact {
-                    entity1,
-                    entity2,
-                    report: *r,
-                });
-            }
+    let Ok(reports) = state.modifier.reports() else {
+        return;
+    };
+    let mut now = HashMap::with_capacity(last.0.len());
+    for r in reports {
+        let (Some(entity1), Some(entity2)) = (entity(r.collider1), entity(r.collider2)) else {
+            continue;
+        };
+        contacts.0.push(EntityContact {
+            entity1,
+            entity2,
+            report: *r,
+        });
+        if now.contains_key(&(entity1, entity2)) {
+            continue;
+        }
+        now.insert((entity1, entity2), r.regime);
+        let from = last.0.get(&(entity1, entity2)).copied();
+        if from != Some(r.regime) {
+            changed.write(RegimeChanged {
+                entity1,
+                entity2,
+                from,
+                to: r.regime,
+            });
         }
     }
+    last.0 = now;
 }
 
 /// Vibration sources onto the colliders' contacts (and off again).

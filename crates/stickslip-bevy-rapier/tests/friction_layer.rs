@@ -3,7 +3,8 @@
 //! a box that holds on a slope of tan θ = 0.3 without it slides with it; a ground with a
 //! `SurfaceVelocity` of 0.5 m/s (a belt) carries a box at 0.5 m/s; with contact read-back on,
 //! `StickSlipContacts` names the touching entities and reads the box's weight as its normal
-//! force (within 1 %).
+//! force (within 1 %); a box that breaks away announces its contact and then its slide as
+//! `RegimeChanged` messages, without flicker.
 
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
@@ -127,4 +128,38 @@ fn contacts_are_read_back_as_entities() {
         "normal force {} vs {weight}",
         c.report.normal_force
     );
+}
+
+#[derive(Resource, Default)]
+struct Changes(Vec<stickslip_bevy_rapier::RegimeChanged>);
+
+fn record(
+    mut events: MessageReader<stickslip_bevy_rapier::RegimeChanged>,
+    mut changes: ResMut<Changes>,
+) {
+    changes.0.extend(events.read().copied());
+}
+
+#[test]
+fn regime_changes_arrive_as_messages() {
+    use stickslip_core::law::Regime;
+    // Tilted above break-away (tan θ 0.6 > μ_ba 0.5): the box sticks, breaks away, slides.
+    let (mut app, ground, b) = app(0.6, ());
+    app.init_resource::<Changes>().add_systems(Update, record);
+    app.world_mut()
+        .resource_mut::<StickSlipRapier>()
+        .modifier
+        .set_read_back(ReadBack::Contacts);
+    run(&mut app, 90);
+    let changes = &app.world().resource::<Changes>().0;
+    let first = changes.first().expect("no regime message");
+    assert_eq!(
+        first.from, None,
+        "the first message announces a new contact"
+    );
+    assert!([first.entity1, first.entity2].contains(&ground));
+    assert!([first.entity1, first.entity2].contains(&b));
+    assert_eq!(changes.last().unwrap().to, Regime::Sliding, "{changes:?}");
+    // A steady slide does not flicker: new contact, (stick-slip,) sliding.
+    assert!(changes.len() <= 3, "{changes:?}");
 }

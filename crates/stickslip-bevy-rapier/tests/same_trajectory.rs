@@ -66,8 +66,10 @@ fn in_bevy_rapier() -> Vec<Vec3> {
 }
 
 fn in_rapier() -> Vec<Vec3> {
-    let mut world = rp::PhysicsWorld::default();
-    world.gravity = gravity();
+    let mut world = rp::PhysicsWorld {
+        gravity: gravity(),
+        ..Default::default()
+    };
     world.integration_parameters.dt = DT;
     let (_, ground) = world.insert(
         rp::RigidBodyBuilder::fixed().translation(Vec3::new(0.0, -0.1, 0.0)),
