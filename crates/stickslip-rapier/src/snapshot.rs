@@ -2,8 +2,9 @@
 //!
 //! rapier serializes its own world (`PhysicsWorld` with rapier's `serde-serialize` feature);
 //! [`StickSlipSnapshot`] is the rest: everything the [`StickSlip`] modifier keeps except your
-//! wrapped hooks `H` — the tuning, the default and per-collider materials, the vibration
-//! sources, the colliders whose hook flag it turned on, the per-contact friction state (law
+//! wrapped hooks `H` — the tuning, the default and per-collider materials, the attached
+//! colliders and per-pair materials, the vibration sources, the colliders whose hook flag it
+//! turned on, the per-contact friction state (law
 //! state, mean normal forces, and the slot/generation layout that rapier's
 //! manifolds point at through their `user_data`), the clock, the totals and the last reports.
 //! A world resumed from both continues exactly as the uninterrupted one, bit for bit.
