@@ -34,4 +34,6 @@ cargo test --workspace
 # stickslip-bevy's optional parts: contact gizmos (`debug`) and scenario files as entities
 # (`scenario`), with their tests and doc tests (the window example is built by .ci/run).
 cargo test -p stickslip-bevy --features debug,scenario
+# stickslip on bevy_rapier: its contact gizmos (`debug`), headless.
+cargo test -p stickslip-bevy-rapier --features debug
 cargo test -p stickslip --features parallel --test rapier_many_contacts --test rapier_popov --test rapier_snapshot --test rapier_drive --test shared_world

@@ -29,6 +29,9 @@
 
 #![warn(missing_docs)]
 
+#[cfg(feature = "debug")]
+pub mod debug;
+
 use bevy::ecs::schedule::ScheduleLabel;
 use bevy::ecs::system::{StaticSystemParam, SystemParam, SystemParamItem};
 use bevy::prelude::*;
