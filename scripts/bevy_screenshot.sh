@@ -1,9 +1,8 @@
 #!/usr/bin/env bash
 # The bevy examples in a real window under Xvfb (software Vulkan): `vibrating_conveyor` renders
 # FRAMES frames and saves the window to OUT; `view` opens scenarios/incline.toml the same way
-# (saved beside OUT as *_view.png); `elliptical_drive` likewise (*_drive.png). Each picture is
-# checked not to be blank. The bevy_rapier version of `elliptical_drive` (crate
-# stickslip-bevy-rapier) is saved beside OUT as *_drive_rapier.png.
+# (saved beside OUT as *_view.png); `elliptical_drive_rapier`, the bevy_rapier app of crate
+# stickslip-bevy-rapier, likewise (*_drive_rapier.png). Each picture is checked not to be blank.
 #   bash scripts/bevy_screenshot.sh [OUT] [FRAMES]
 # Installs what it needs from Debian's packages (xvfb, Mesa's Vulkan driver) when missing.
 set -euo pipefail
@@ -18,28 +17,24 @@ if ! command -v xvfb-run >/dev/null || [ ! -e /usr/share/vulkan/icd.d/lvp_icd.x8
         libxrandr2 libxi6 libxkbcommon-x11-0 >/dev/null
 fi
 
-cargo build -p stickslip-bevy --features window,scenario --example vibrating_conveyor --example view \
-    --example elliptical_drive
+cargo build -p stickslip-bevy --features window,scenario --example vibrating_conveyor --example view
 cargo build -p stickslip-bevy-rapier --features window --example elliptical_drive_rapier
 export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
 chmod 700 "$XDG_RUNTIME_DIR"
 VIEW_OUT="${OUT%.png}_view.png"
-DRIVE_OUT="${OUT%.png}_drive.png"
 RAPIER_OUT="${OUT%.png}_drive_rapier.png"
-rm -f "$OUT" "$VIEW_OUT" "$DRIVE_OUT" "$RAPIER_OUT"
+rm -f "$OUT" "$VIEW_OUT" "$RAPIER_OUT"
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
     "$CARGO_TARGET_DIR/debug/examples/vibrating_conveyor" --screenshot "$OUT" --frames "$FRAMES"
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
     "$CARGO_TARGET_DIR/debug/examples/view" scenarios/incline.toml \
     --screenshot "$VIEW_OUT" --frames "$FRAMES"
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
-    "$CARGO_TARGET_DIR/debug/examples/elliptical_drive" --screenshot "$DRIVE_OUT" --frames "$FRAMES"
-timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
     "$CARGO_TARGET_DIR/debug/examples/elliptical_drive_rapier" --screenshot "$RAPIER_OUT" \
     --frames "$FRAMES"
 
 # Not blank: a PNG whose pixels vary (decoded with the standard library only).
-for png in "$OUT" "$VIEW_OUT" "$DRIVE_OUT" "$RAPIER_OUT"; do
+for png in "$OUT" "$VIEW_OUT" "$RAPIER_OUT"; do
 python3 - "$png" <<'PY'
 import struct, sys, zlib
 data = open(sys.argv[1], "rb").read()
