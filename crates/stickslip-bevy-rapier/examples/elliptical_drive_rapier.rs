@@ -1,5 +1,5 @@
 //! Vibration that transports by itself, in a real window, as a bevy_rapier app with stickslip
-//! added (`RapierPhysicsPlugin::<StickSlipHooks>` + `StickSlipRapierPlugin`, in bevy's fixed
+//! added (`RapierPhysicsPlugin::<NoUserData>` + `StickSlipRapierPlugin`, in bevy's fixed
 //! schedule at 240 Hz): two flat plates side by side, each
 //! vibrating elliptically — a normal (α = 0.6) and a tangential (0.75 of the load, along x)
 //! sine component at 2 kHz (averaged), the tangential one a quarter period after the normal
@@ -23,9 +23,7 @@ use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured, save_to_dis
 use bevy::time::TimeUpdateStrategy;
 use bevy_rapier3d::prelude::*;
 use std::time::Duration;
-use stickslip_bevy_rapier::{
-    StickSlipFriction, StickSlipHooks, StickSlipRapierPlugin, StickSlipVibration,
-};
+use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapierPlugin, StickSlipVibration};
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 use stickslip_rapier_035::scenes::VibratingPlate;
@@ -111,11 +109,8 @@ fn main() -> AppExit {
         dt: 1.0 / 240.0,
         substeps: 1,
     })
-    .add_plugins(RapierPhysicsPlugin::<StickSlipHooks>::default().in_fixed_schedule())
-    .add_plugins(StickSlipRapierPlugin {
-        schedule: FixedUpdate.intern(),
-        ..default()
-    })
+    .add_plugins(RapierPhysicsPlugin::<NoUserData>::default().in_fixed_schedule())
+    .add_plugins(StickSlipRapierPlugin::default().in_fixed_schedule())
     .insert_resource(Time::<Fixed>::from_hz(240.0))
     .insert_resource(ClearColor(Color::srgb(0.09, 0.1, 0.12)))
     .insert_resource(Drive {

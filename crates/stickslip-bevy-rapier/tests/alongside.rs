@@ -6,9 +6,7 @@
 
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
-use stickslip_bevy_rapier::{
-    StickSlipFriction, StickSlipHooks, StickSlipRapier, StickSlipRapierPlugin,
-};
+use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin};
 
 #[derive(Resource, Default)]
 struct Seen {
@@ -38,7 +36,7 @@ fn sensors_groups_events_and_joints_work_beside_stickslip() {
             substeps: 1,
         })
         .init_resource::<Seen>()
-        .add_plugins(RapierPhysicsPlugin::<StickSlipHooks>::default())
+        .add_plugins(RapierPhysicsPlugin::<NoUserData>::default())
         .add_plugins(StickSlipRapierPlugin::default())
         .add_systems(PostUpdate, count_events.after(PhysicsSet::Writeback));
     app.update();

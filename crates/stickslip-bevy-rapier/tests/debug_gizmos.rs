@@ -10,7 +10,7 @@ use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
 use std::any::TypeId;
 use stickslip_bevy_rapier::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
-use stickslip_bevy_rapier::{StickSlipFriction, StickSlipHooks, StickSlipRapierPlugin};
+use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapierPlugin};
 use stickslip_core::law::Regime;
 
 fn gizmo_app() -> App {
@@ -20,7 +20,7 @@ fn gizmo_app() -> App {
             dt: 1.0 / 60.0,
             substeps: 1,
         })
-        .add_plugins(RapierPhysicsPlugin::<StickSlipHooks>::default())
+        .add_plugins(RapierPhysicsPlugin::<NoUserData>::default())
         .add_plugins((
             StickSlipRapierPlugin::default(),
             StickSlipDebugPlugin,

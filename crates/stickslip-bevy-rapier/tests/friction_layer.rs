@@ -9,7 +9,7 @@
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
 use stickslip_bevy_rapier::{
-    StickSlipContacts, StickSlipFriction, StickSlipHooks, StickSlipRapier, StickSlipRapierPlugin,
+    StickSlipContacts, StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin,
     StickSlipVibration, SurfaceVelocity,
 };
 use stickslip_core::waveform::Waveform;
@@ -28,7 +28,7 @@ fn app(tan: f64, ground: impl Bundle) -> (App, Entity, Entity) {
             dt: DT,
             substeps: 1,
         })
-        .add_plugins(RapierPhysicsPlugin::<StickSlipHooks>::default())
+        .add_plugins(RapierPhysicsPlugin::<NoUserData>::default())
         .add_plugins(StickSlipRapierPlugin::default());
     app.update();
     let th = tan.atan();

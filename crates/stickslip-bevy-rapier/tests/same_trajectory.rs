@@ -5,7 +5,7 @@
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
 use bevy_rapier3d::rapier::prelude as rp;
-use stickslip_bevy_rapier::{StickSlipFriction, StickSlipHooks, StickSlipRapierPlugin};
+use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapierPlugin};
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 use stickslip_rapier_035::{FrictionMaterial, StickSlip};
@@ -31,11 +31,8 @@ fn in_bevy_rapier() -> Vec<Vec3> {
             dt: DT,
             substeps: 1,
         })
-        .add_plugins(RapierPhysicsPlugin::<StickSlipHooks>::default())
-        .add_plugins(StickSlipRapierPlugin {
-            default_material: material(),
-            ..default()
-        });
+        .add_plugins(RapierPhysicsPlugin::<NoUserData>::default())
+        .add_plugins(StickSlipRapierPlugin::new(material()));
     app.update();
     let mut q = app.world_mut().query::<&mut RapierConfiguration>();
     for mut c in q.iter_mut(app.world_mut()) {

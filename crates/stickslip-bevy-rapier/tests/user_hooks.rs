@@ -1,5 +1,5 @@
 //! The app's own `BevyPhysicsHooks` keep working beside stickslip's
-//! (`RapierPhysicsPlugin::<StickSlipHooks<MyHooks>>`): a one-way platform (the user's hook
+//! (`RapierPhysicsPlugin::<MyHooks>` + `StickSlipRapierPlugin::default().with_hooks::<MyHooks>()`): a one-way platform (the user's hook
 //! drops the contacts whose normal does not point up out of it) lets a ball thrown from below
 //! pass and then carries it, and a conveyor (the user's hook gives a belt's contacts a
 //! surface velocity) carries a box at the belt's 0.5 m/s — while stickslip holds a box on its
@@ -8,9 +8,7 @@
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
-use stickslip_bevy_rapier::{
-    StickSlipFriction, StickSlipHooks, StickSlipRapier, StickSlipRapierPlugin,
-};
+use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin};
 
 #[derive(Component)]
 struct OneWay;
@@ -52,8 +50,8 @@ fn the_apps_own_hooks_work_beside_stickslip() {
             dt: 1.0 / 60.0,
             substeps: 1,
         })
-        .add_plugins(RapierPhysicsPlugin::<StickSlipHooks<MyHooks>>::default())
-        .add_plugins(StickSlipRapierPlugin::default());
+        .add_plugins(RapierPhysicsPlugin::<MyHooks>::default())
+        .add_plugins(StickSlipRapierPlugin::default().with_hooks::<MyHooks>());
     app.update();
     let world = app.world_mut();
     let hooks = ActiveHooks::MODIFY_SOLVER_CONTACTS;

@@ -1,0 +1,491 @@
+//! Opens a scenario file in a window: the TOML scenarios that `stickslip run` steps headless
+//! and streams to rerun (`scenarios/*.toml`) spawn as bevy entities, and their drivers (belts,
+//! springs, force ramps) act on them. Without a file it opens the CLI's built-in scenario.
+//!
+//! Dynamic bodies are coloured by the regime of their contacts (green sticking, orange
+//! stick-slip, red sliding, white without contact); fixed bodies are grey, kinematic ones
+//! blue. The contact gizmos show each contact's friction force and normal. The HUD shows the
+//! scenario's name and description, the time, and the contacts by regime.
+//!
+//! The camera frames the moving bodies whole (their bounding boxes in the camera's field of
+//! view), and the contact gizmos are scaled to the scene: the heaviest body's weight draws as
+//! a quarter of the framed region.
+//!
+//! Keys: Space pause, S slow motion (×0.1), R reload the file and restart, G contact gizmos.
+//!
+//! A bevy_rapier app: the scenario's bodies are bevy_rapier entities (`RigidBody`, child
+//! `Collider`s, `Friction`, …) with stickslip's components, bevy_rapier steps them in the
+//! fixed schedule at the scenario's dt, stickslip brackets every step.
+//!
+//! ```sh
+//! cargo run --release -p stickslip-bevy-rapier --features window,scenario --example view -- \
+//!     scenarios/belt_stick_slip.toml
+//! # No display: under Xvfb, render 90 frames of 1/30 s simulated time, save the window, exit.
+//! xvfb-run -a -s "-screen 0 1280x720x24" cargo run -p stickslip-bevy-rapier \
+//!     --features window,scenario --example view -- scenarios/incline.toml \
+//!     --screenshot incline.png --frames 90
+//! ```
+
+use bevy::diagnostic::FrameCount;
+use bevy::prelude::*;
+use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured, save_to_disk};
+use bevy::time::TimeUpdateStrategy;
+use bevy_rapier3d::prelude::*;
+use bevy_rapier3d::rapier::geometry::ShapeType;
+use std::path::PathBuf;
+use std::time::Duration;
+use stickslip_bevy_rapier::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
+use stickslip_bevy_rapier::scenario::{
+    DriverAction, LoadedScenario, Scenario, StickSlipScenarioPlugin, despawn_scenario,
+    spawn_scenario,
+};
+use stickslip_bevy_rapier::{StickSlipContacts, StickSlipRapier, StickSlipRapierPlugin};
+use stickslip_core::law::Regime;
+
+/// The window's size (px).
+const WINDOW: (u32, u32) = (1280, 720);
+
+fn main() -> AppExit {
+    let options = match Options::parse(std::env::args().skip(1)) {
+        Ok(o) => o,
+        Err(e) => {
+            eprintln!(
+                "{e}\nusage: view [SCENARIO.toml] [--screenshot PATH] [--frames N]\n\
+                 (without a file: the built-in scenario of `stickslip run`)"
+            );
+            return AppExit::error();
+        }
+    };
+    // Errors in the file (with field and line) before any window opens.
+    let source = Source(options.scenario.clone());
+    let scenario = match source.load() {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("{e}");
+            return AppExit::error();
+        }
+    };
+    if std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none() {
+        eprintln!(
+            "no display: run this example on a desktop, or under Xvfb: \
+             xvfb-run -a -s \"-screen 0 1280x720x24\" <binary> FILE --screenshot out.png"
+        );
+        return AppExit::error();
+    }
+    let mut app = App::new();
+    app.add_plugins(DefaultPlugins.set(WindowPlugin {
+        primary_window: Some(Window {
+            title: format!("stickslip: {}", scenario.name),
+            resolution: WINDOW.into(),
+            ..default()
+        }),
+        ..default()
+    }))
+    // bevy_rapier in the fixed schedule (its timestep set to the scenario's dt on load),
+    // stickslip beside it, the contact gizmos, the scenario's drivers.
+    .add_plugins(RapierPhysicsPlugin::<NoUserData>::default().in_fixed_schedule())
+    .add_plugins((
+        StickSlipRapierPlugin::default().in_fixed_schedule(),
+        StickSlipDebugPlugin,
+        StickSlipScenarioPlugin::new(FixedUpdate),
+    ))
+    .insert_resource(ClearColor(Color::srgb(0.09, 0.1, 0.12)))
+    .insert_resource(source)
+    .insert_resource(Current(scenario))
+    .add_systems(Startup, (setup, load).chain())
+    .add_systems(
+        Update,
+        (keys, add_meshes, colour_bodies, draw_springs, hud).chain(),
+    );
+    if let Some(shot) = options.screenshot {
+        // Reproducible pictures: every frame advances 1/30 s, however slow the renderer.
+        app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f64(
+            1.0 / 30.0,
+        )))
+        .insert_resource(shot)
+        .add_systems(Last, shot_and_exit);
+    }
+    app.run()
+}
+
+/// Command line: `[FILE] --screenshot PATH --frames N`.
+struct Options {
+    scenario: Option<PathBuf>,
+    screenshot: Option<ShotAt>,
+}
+
+/// Where and when to save the window.
+#[derive(Resource, Clone)]
+struct ShotAt {
+    path: String,
+    frame: u32,
+}
+
+impl Options {
+    fn parse(mut args: impl Iterator<Item = String>) -> Result<Options, String> {
+        let (mut scenario, mut path, mut frames) = (None, None, 120u32);
+        while let Some(arg) = args.next() {
+            match arg.as_str() {
+                "--screenshot" => path = Some(args.next().ok_or("--screenshot needs a path")?),
+                "--frames" => {
+                    let n = args.next().ok_or("--frames needs a number")?;
+                    frames = n
+                        .parse()
+                        .map_err(|_| format!("--frames: not a number: {n}"))?;
+                }
+                other if other.starts_with("--") => {
+                    return Err(format!("unknown option {other}"));
+                }
+                file if scenario.is_none() => scenario = Some(PathBuf::from(file)),
+                extra => return Err(format!("one scenario file only: {extra}")),
+            }
+        }
+        Ok(Options {
+            scenario,
+            screenshot: path.map(|path| ShotAt {
+                path,
+                frame: frames.max(1),
+            }),
+        })
+    }
+}
+
+/// Where the scenario comes from: a file (read again on reload) or the built-in one.
+#[derive(Resource, Clone)]
+struct Source(Option<PathBuf>);
+
+impl Source {
+    fn load(&self) -> Result<Scenario, String> {
+        match &self.0 {
+            Some(path) => {
+                let scenario = Scenario::from_path(path).map_err(|e| e.to_string())?;
+                scenario
+                    .build()
+                    .map_err(|e| format!("{}: {e}", path.display()))?;
+                Ok(scenario)
+            }
+            None => Ok(Scenario::builtin()),
+        }
+    }
+}
+
+/// The scenario on screen.
+#[derive(Resource)]
+struct Current(Scenario);
+
+/// The HUD's text.
+#[derive(Component)]
+struct Hud;
+
+/// A dynamic body's collider, painted by the regime of its contacts.
+#[derive(Component)]
+struct Part;
+
+/// Materials of the regimes (sticking, stick-slip, sliding) and of no contact.
+#[derive(Resource)]
+struct Palette([Handle<StandardMaterial>; 4]);
+
+fn setup(mut commands: Commands, mut materials: ResMut<Assets<StandardMaterial>>) {
+    let regimes = [Regime::Sticking, Regime::StickSlip, Regime::Sliding];
+    let paint = |c: Color| StandardMaterial {
+        base_color: c,
+        perceptual_roughness: 0.7,
+        ..default()
+    };
+    commands.insert_resource(Palette(std::array::from_fn(|i| {
+        materials.add(paint(
+            regimes.get(i).map_or(Color::WHITE, |r| regime_color(*r)),
+        ))
+    })));
+    commands.spawn((
+        DirectionalLight {
+            illuminance: 9_000.0,
+            shadow_maps_enabled: true,
+            ..default()
+        },
+        Transform::from_xyz(3.0, 8.0, 5.0).looking_at(Vec3::ZERO, Vec3::Y),
+    ));
+    commands.insert_resource(GlobalAmbientLight {
+        brightness: 400.0,
+        ..default()
+    });
+    commands.spawn((Camera3d::default(), Transform::default()));
+    commands.spawn((
+        Hud,
+        Text::new(""),
+        TextFont {
+            font_size: FontSize::Px(15.0),
+            ..default()
+        },
+        Node {
+            position_type: PositionType::Absolute,
+            left: px(12),
+            top: px(10),
+            ..default()
+        },
+    ));
+}
+
+/// Spawns the current scenario, frames its moving bodies and scales the gizmos to it.
+fn load(world: &mut World) {
+    let scenario = world.resource::<Current>().0.clone();
+    if let Err(e) = spawn_scenario(world, &scenario) {
+        error!("{e}");
+        world.write_message(AppExit::error());
+        return;
+    }
+    let loaded = world.resource::<LoadedScenario>();
+    let fov = PerspectiveProjection::default().fov;
+    let camera = loaded.framing(fov, WINDOW.0 as f32 / WINDOW.1 as f32);
+    let size = (loaded.region.1 - loaded.region.0).length();
+    let weight = loaded.max_weight();
+    let mut cameras = world.query_filtered::<&mut Transform, With<Camera3d>>();
+    for mut t in cameras.iter_mut(world) {
+        *t = camera;
+    }
+    // Arrows: the heaviest body's weight is a quarter of the region (friction is less).
+    let mut store = world.resource_mut::<GizmoConfigStore>();
+    let (config, gizmos) = store.config_mut::<StickSlipGizmos>();
+    config.line.width = 2.5;
+    gizmos.force_scale = if weight > 0.0 {
+        0.25 * size / weight
+    } else {
+        0.0
+    };
+    gizmos.normal_length = 0.06 * size;
+    gizmos.point_radius = 0.008 * size;
+}
+
+fn keys(
+    mut commands: Commands,
+    keys: Res<ButtonInput<KeyCode>>,
+    mut time: ResMut<Time<Virtual>>,
+    mut gizmos: ResMut<GizmoConfigStore>,
+    source: Res<Source>,
+) {
+    if keys.just_pressed(KeyCode::Space) {
+        time.toggle();
+    }
+    if keys.just_pressed(KeyCode::KeyS) {
+        let slow = time.relative_speed() < 1.0;
+        time.set_relative_speed(if slow { 1.0 } else { 0.1 });
+    }
+    if keys.just_pressed(KeyCode::KeyG) {
+        gizmos.config_mut::<StickSlipGizmos>().0.enabled ^= true;
+    }
+    if keys.just_pressed(KeyCode::KeyR) {
+        // Read the file again (edit, press R); a broken edit keeps the running scenario.
+        match source.load() {
+            Ok(s) => {
+                commands.insert_resource(Current(s));
+                commands.queue(|world: &mut World| {
+                    despawn_scenario(world);
+                    load(world);
+                });
+            }
+            Err(e) => error!("not reloaded: {e}"),
+        }
+    }
+}
+
+/// Meshes for new scenario colliders, from their rapier shapes.
+fn add_meshes(
+    mut commands: Commands,
+    mut meshes: ResMut<Assets<Mesh>>,
+    mut materials: ResMut<Assets<StandardMaterial>>,
+    palette: Res<Palette>,
+    loaded: Option<Res<LoadedScenario>>,
+    colliders: Query<(Entity, &Collider, &ChildOf), Added<Collider>>,
+    bodies: Query<&RigidBody>,
+) {
+    let Some(loaded) = loaded else {
+        return;
+    };
+    for (entity, collider, parent) in &colliders {
+        if !loaded.colliders.contains(&entity) {
+            continue;
+        }
+        let shape = &collider.raw;
+        let mesh: Mesh = match shape.shape_type() {
+            ShapeType::Cuboid => {
+                let h = shape.as_cuboid().unwrap().half_extents;
+                Cuboid::new(2.0 * h.x, 2.0 * h.y, 2.0 * h.z).into()
+            }
+            ShapeType::Ball => Sphere::new(shape.as_ball().unwrap().radius).into(),
+            ShapeType::Capsule => {
+                let c = shape.as_capsule().unwrap();
+                Capsule3d::new(c.radius, c.segment.length()).into()
+            }
+            other => {
+                warn!("no mesh for a {other:?} collider");
+                continue;
+            }
+        };
+        let kind = bodies.get(parent.parent()).ok();
+        let material = match kind {
+            Some(RigidBody::Dynamic) => palette.0[3].clone(),
+            Some(RigidBody::Fixed) => materials.add(StandardMaterial {
+                base_color: Color::srgb(0.45, 0.47, 0.5),
+                perceptual_roughness: 0.8,
+                ..default()
+            }),
+            _ => materials.add(StandardMaterial {
+                base_color: Color::srgb(0.35, 0.55, 0.9),
+                perceptual_roughness: 0.8,
+                ..default()
+            }),
+        };
+        commands
+            .entity(entity)
+            .insert((Mesh3d(meshes.add(mesh)), MeshMaterial3d(material)));
+        if kind == Some(&RigidBody::Dynamic) {
+            commands.entity(entity).insert(Part);
+        }
+        // Visible children need a visible parent (bevy's hierarchy rule B0004).
+        commands
+            .entity(parent.parent())
+            .insert(Visibility::default());
+    }
+}
+
+/// Dynamic bodies' colliders in the colour of their contacts' regime (white without contact).
+fn colour_bodies(
+    contacts: Res<StickSlipContacts>,
+    palette: Res<Palette>,
+    mut parts: Query<(Entity, &mut MeshMaterial3d<StandardMaterial>), With<Part>>,
+) {
+    for (e, mut material) in &mut parts {
+        let i = match contacts.regime_of(e) {
+            Some(Regime::Sticking) => 0,
+            Some(Regime::StickSlip) => 1,
+            Some(Regime::Sliding) => 2,
+            None => 3,
+        };
+        if material.0 != palette.0[i] {
+            material.0 = palette.0[i].clone();
+        }
+    }
+}
+
+/// Spring drivers as yellow zigzags from their (moving) anchor to the body point.
+fn draw_springs(
+    loaded: Option<Res<LoadedScenario>>,
+    stickslip: Res<StickSlipRapier>,
+    bodies: Query<&GlobalTransform>,
+    mut gizmos: Gizmos,
+) {
+    let Some(loaded) = loaded else {
+        return;
+    };
+    let t = stickslip.modifier.time() - loaded.start_time;
+    for d in loaded.drivers() {
+        let DriverAction::Spring {
+            anchor,
+            anchor_velocity,
+            point,
+            ..
+        } = &d.action
+        else {
+            continue;
+        };
+        let Ok(body) = bodies.get(loaded.bodies[d.body].entity) else {
+            continue;
+        };
+        let a = Vec3::from_array(std::array::from_fn(|k| {
+            (anchor[k] + anchor_velocity[k] * t) as f32
+        }));
+        let p = body.transform_point(*point);
+        let along = p - a;
+        let side = along.any_orthonormal_vector() * 0.02;
+        let points = (0..=16).map(|i| {
+            let wiggle = match i {
+                0 | 16 => 0.0,
+                _ if i % 2 == 0 => 1.0,
+                _ => -1.0,
+            };
+            a + along * (i as f32 / 16.0) + side * wiggle
+        });
+        gizmos.linestrip(points, Color::srgb(1.0, 0.85, 0.2));
+        gizmos.sphere(
+            Isometry3d::from_translation(a),
+            0.015,
+            Color::srgb(1.0, 0.85, 0.2),
+        );
+    }
+}
+
+fn hud(
+    stickslip: Res<StickSlipRapier>,
+    time: Res<Time<Virtual>>,
+    loaded: Option<Res<LoadedScenario>>,
+    mut text: Query<&mut Text, With<Hud>>,
+) {
+    let (Ok(mut text), Some(loaded)) = (text.single_mut(), loaded) else {
+        return;
+    };
+    let totals = stickslip.modifier.totals().unwrap_or_default();
+    let state = match (time.is_paused(), time.relative_speed() < 1.0) {
+        (true, _) => "   [paused]",
+        (false, true) => "   [slow motion x0.1]",
+        _ => "",
+    };
+    text.0 = format!(
+        "stickslip scenario: {name}    t = {t:.2} s{state}\n\
+         {description}\n\
+         \n\
+         {bodies} bodies;  contacts  {st} sticking, {ss} stick-slip, {sl} sliding;  \
+         friction dissipates {pw:.3} W\n\
+         bodies    green sticking, orange stick-slip, red sliding, white no contact\n\
+         keys      Space pause  S slow motion  R reload + restart  G gizmos",
+        name = loaded.name,
+        t = stickslip.modifier.time() - loaded.start_time,
+        description = wrap(&loaded.description, 100),
+        bodies = loaded.bodies.len(),
+        st = totals.sticking,
+        ss = totals.stick_slip,
+        sl = totals.sliding,
+        pw = totals.dissipated_power,
+    );
+}
+
+/// Breaks `text` into lines of at most about `width` characters.
+fn wrap(text: &str, width: usize) -> String {
+    let mut out = String::new();
+    let mut line = 0;
+    for word in text.split_whitespace() {
+        if line > 0 && line + 1 + word.len() > width {
+            out.push('\n');
+            line = 0;
+        } else if line > 0 {
+            out.push(' ');
+            line += 1;
+        }
+        out.push_str(word);
+        line += word.len();
+    }
+    out
+}
+
+/// `--screenshot PATH --frames N`: save the window at frame N and exit; a screenshot that
+/// never arrives ends the run with an error instead of hanging it.
+fn shot_and_exit(
+    mut commands: Commands,
+    frames: Res<FrameCount>,
+    shot: Res<ShotAt>,
+    mut exit: MessageWriter<AppExit>,
+) {
+    if frames.0 == shot.frame {
+        let path = shot.path.clone();
+        commands.spawn(Screenshot::primary_window()).observe(
+            move |captured: On<ScreenshotCaptured>, mut exit: MessageWriter<AppExit>| {
+                save_to_disk(path.clone())(captured);
+                info!("saved {path}");
+                exit.write(AppExit::Success);
+            },
+        );
+    }
+    if frames.0 > shot.frame + 300 {
+        error!("no screenshot {} frames after it was requested", 300);
+        exit.write(AppExit::error());
+    }
+}
