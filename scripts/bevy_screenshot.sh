@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# The bevy examples in a real window under Xvfb (software Vulkan): `vibrating_conveyor` renders
-# FRAMES frames and saves the window to OUT; `view` opens scenarios/incline.toml the same way
-# (saved beside OUT as *_view.png); `elliptical_drive_rapier`, the bevy_rapier app of crate
-# stickslip-bevy-rapier, likewise (*_drive_rapier.png). Each picture is checked not to be blank.
+# The bevy examples (bevy_rapier apps with stickslip, crate stickslip-bevy) in a real window
+# under Xvfb (software Vulkan): `vibrating_conveyor` renders FRAMES frames and saves the window
+# to OUT; `view` opens scenarios/incline.toml the same way (saved beside OUT as *_view.png);
+# `elliptical_drive` likewise (*_drive.png). Each picture is checked not to be blank.
 #   bash scripts/bevy_screenshot.sh [OUT] [FRAMES]
 # Installs what it needs from Debian's packages (xvfb, Mesa's Vulkan driver) when missing.
 set -euo pipefail
@@ -17,12 +17,12 @@ if ! command -v xvfb-run >/dev/null || [ ! -e /usr/share/vulkan/icd.d/lvp_icd.x8
         libxrandr2 libxi6 libxkbcommon-x11-0 >/dev/null
 fi
 
-cargo build -p stickslip-bevy --features window,scenario --example vibrating_conveyor --example view
-cargo build -p stickslip-bevy-rapier --features window --example elliptical_drive_rapier
+cargo build -p stickslip-bevy --features window,scenario --example vibrating_conveyor \
+    --example view --example elliptical_drive
 export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
 chmod 700 "$XDG_RUNTIME_DIR"
 VIEW_OUT="${OUT%.png}_view.png"
-RAPIER_OUT="${OUT%.png}_drive_rapier.png"
+RAPIER_OUT="${OUT%.png}_drive.png"
 rm -f "$OUT" "$VIEW_OUT" "$RAPIER_OUT"
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
     "$CARGO_TARGET_DIR/debug/examples/vibrating_conveyor" --screenshot "$OUT" --frames "$FRAMES"
@@ -30,7 +30,7 @@ timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
     "$CARGO_TARGET_DIR/debug/examples/view" scenarios/incline.toml \
     --screenshot "$VIEW_OUT" --frames "$FRAMES"
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
-    "$CARGO_TARGET_DIR/debug/examples/elliptical_drive_rapier" --screenshot "$RAPIER_OUT" \
+    "$CARGO_TARGET_DIR/debug/examples/elliptical_drive" --screenshot "$RAPIER_OUT" \
     --frames "$FRAMES"
 
 # Not blank: a PNG whose pixels vary (decoded with the standard library only).

@@ -31,9 +31,8 @@ install_rerun_cli
 # the rapier test files (tests/rapier_*.rs, tests/ordinary_*.rs) built against rapier3d
 # 0.35.0-glamx0.2, the rapier bevy_rapier3d 0.36 pins, besides 0.36.1.
 cargo test --workspace
-# stickslip-bevy's optional parts: contact gizmos (`debug`) and scenario files as entities
-# (`scenario`), with their tests and doc tests (the window example is built by .ci/run).
+# stickslip-bevy (the add-on to bevy_rapier) with its optional parts: contact gizmos (`debug`)
+# and scenario files as bevy_rapier entities (`scenario`), their tests and doc tests, headless
+# (the windowed examples are built and run by scripts/bevy_screenshot.sh in .ci/run).
 cargo test -p stickslip-bevy --features debug,scenario
-# stickslip on bevy_rapier: its contact gizmos (`debug`), headless.
-cargo test -p stickslip-bevy-rapier --features debug
 cargo test -p stickslip --features parallel --test rapier_many_contacts --test rapier_popov --test rapier_snapshot --test rapier_drive --test shared_world

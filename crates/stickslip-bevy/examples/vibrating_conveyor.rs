@@ -19,6 +19,11 @@
 //! Keys: V vibration on/off (lanes 2 and 3), Space pause, S slow motion (×0.1), R reset,
 //! G contact gizmos.
 //!
+//! A bevy_rapier app: bevy_rapier's `RapierPhysicsPlugin` in the fixed schedule at 3 kHz,
+//! its components (`RigidBody`, `Collider`, `Friction`, `LockedAxes`, child colliders, a
+//! kinematic position-based trough), and stickslip added with `StickSlipRapierPlugin` and a
+//! `StickSlipFriction` / `StickSlipVibration` component on the troughs and parts.
+//!
 //! ```sh
 //! cargo run --release -p stickslip-bevy --features window --example vibrating_conveyor
 //! # No display: under Xvfb (software Vulkan), render 120 frames of 1/30 s simulated time
@@ -31,14 +36,23 @@ use bevy::diagnostic::FrameCount;
 use bevy::prelude::*;
 use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured, save_to_disk};
 use bevy::time::TimeUpdateStrategy;
+use bevy_rapier3d::prelude::*;
 use std::collections::VecDeque;
 use std::f32::consts::FRAC_PI_6;
 use std::time::Duration;
-use stickslip_bevy::debug::{StickSlipGizmos, regime_color};
-use stickslip_bevy::prelude::*;
+use stickslip_bevy::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
+use stickslip_bevy::{
+    StickSlipContacts, StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin,
+    StickSlipVibration,
+};
 use stickslip_core::feeder::VibratoryFeeder;
+use stickslip_core::law::{Law, Regime};
 use stickslip_core::popov;
 use stickslip_core::sliding_curve::Curve;
+use stickslip_core::waveform::Waveform;
+use stickslip_rapier_035::{
+    Amplitude, FrictionMaterial, VibrationDirection, VibrationMode, VibrationSource,
+};
 
 /// Slope tan θ of lanes 1 and 2.
 const SLOPE: f64 = 0.3;
@@ -91,17 +105,24 @@ fn main() -> AppExit {
         }),
         ..default()
     }))
-    .add_plugins(StickSlipPlugins::default())
+    // bevy_rapier in the fixed schedule, one rapier step per tick; stickslip beside it.
+    .insert_resource(TimestepMode::Fixed {
+        dt: (1.0 / PHYSICS_HZ) as f32,
+        substeps: 1,
+    })
+    .add_plugins(RapierPhysicsPlugin::<NoUserData>::default().in_fixed_schedule())
+    .add_plugins(StickSlipRapierPlugin::default().in_fixed_schedule())
+    .add_plugins(StickSlipDebugPlugin)
     .insert_resource(Time::<Fixed>::from_hz(PHYSICS_HZ))
     .insert_resource(ClearColor(Color::srgb(0.09, 0.1, 0.12)))
     .insert_resource(Theory::compute())
     .init_resource::<Speeds>()
     .add_systems(Startup, (setup, spawn_parts).chain())
     .add_systems(
-        FixedPostUpdate,
+        FixedUpdate,
         (
-            drive_feeder.before(StickSlipSystems::Prepare),
-            (tally_regimes, measure_speeds, restart_parts).after(StickSlipSystems::Writeback),
+            drive_feeder.before(PhysicsSet::SyncBackend),
+            (tally_regimes, measure_speeds, restart_parts).after(PhysicsSet::Writeback),
         ),
     )
     .add_systems(
@@ -264,8 +285,8 @@ fn ep_material() -> FrictionMaterial {
     FrictionMaterial::new(Law::elasto_plastic(C, MU0, MU0, curve).expect("valid law"))
 }
 
-fn popov_vibration() -> Vibration {
-    Vibration(
+fn popov_vibration() -> StickSlipVibration {
+    StickSlipVibration(
         VibrationSource::new(
             VibrationDirection::Normal,
             Amplitude::Ratio(ALPHA),
@@ -341,7 +362,7 @@ fn setup(
                 shaker.clone()
             }),
             Collider::cuboid(LENGTH / 2.0, 0.05, 0.25),
-            FrictionLaw::new(ep_material()),
+            StickSlipFriction(Some(ep_material())),
             Transform::from_translation(centre).with_rotation(rotation),
         ));
         match lane {
@@ -362,7 +383,7 @@ fn setup(
                 Mesh3d(wall_mesh.clone()),
                 MeshMaterial3d(metal.clone()),
                 Collider::cuboid(LENGTH / 2.0, 0.06, 0.01),
-                Friction(0.05),
+                Friction::coefficient(0.05),
                 Transform::from_xyz(0.0, 0.11, side * 0.26),
                 ChildOf(trough),
             ));
@@ -426,9 +447,11 @@ fn spawn_parts(mut commands: Commands, palette: Res<Palette>) {
                 MeshMaterial3d(palette.airborne.clone()),
                 RigidBody::Dynamic,
                 Collider::cuboid(HALF, HALF, HALF),
+                StickSlipFriction(Some(ep_material())),
+                Velocity::zero(),
                 // Point-mass-like, as the feeder's reference: a free box rocks on the
                 // compliant contact and can walk down a slope.
-                LockRotations,
+                LockedAxes::ROTATION_LOCKED,
                 Transform::from_translation(on_lane(lane, along, HALF)).with_rotation(rotation),
             ));
         }
@@ -486,7 +509,7 @@ fn restart_parts(mut parts: Query<(&Part, &mut Transform, &mut Velocity)>) {
         if (transform.translation - centre).dot(dir) > END {
             *transform = Transform::from_translation(on_lane(part.0, START, HALF + 0.005))
                 .with_rotation(rotation);
-            *velocity = Velocity::default();
+            *velocity = Velocity::zero();
         }
     }
 }
@@ -497,7 +520,7 @@ fn keys(
     keys: Res<ButtonInput<KeyCode>>,
     mut time: ResMut<Time<Virtual>>,
     mut gizmos: ResMut<GizmoConfigStore>,
-    popov_base: Query<(Entity, Has<Vibration>), With<PopovBase>>,
+    popov_base: Query<(Entity, Has<StickSlipVibration>), With<PopovBase>>,
     mut feeder: Query<&mut FeederTrough>,
     parts: Query<Entity, With<Part>>,
     mut speeds: ResMut<Speeds>,
@@ -505,7 +528,7 @@ fn keys(
     if keys.just_pressed(KeyCode::KeyV) {
         for (e, on) in &popov_base {
             if on {
-                commands.entity(e).remove::<Vibration>();
+                commands.entity(e).remove::<StickSlipVibration>();
             } else {
                 commands.entity(e).insert(popov_vibration());
             }
@@ -534,7 +557,7 @@ fn keys(
 }
 
 /// Counts each part's regime (the most slippery of its contacts) after every step.
-fn tally_regimes(contacts: Res<ContactReports>, mut parts: Query<(Entity, &mut RegimeTally)>) {
+fn tally_regimes(contacts: Res<StickSlipContacts>, mut parts: Query<(Entity, &mut RegimeTally)>) {
     for (e, mut tally) in &mut parts {
         let i = match contacts.regime_of(e) {
             Some(Regime::Sticking) => 0,
@@ -568,18 +591,18 @@ fn colour_parts(
 }
 
 fn hud(
-    contacts: Res<ContactReports>,
+    stickslip: Res<StickSlipRapier>,
     time: Res<Time<Virtual>>,
     theory: Res<Theory>,
     speeds: Res<Speeds>,
-    popov_base: Query<Has<Vibration>, With<PopovBase>>,
+    popov_base: Query<Has<StickSlipVibration>, With<PopovBase>>,
     mut text: Query<&mut Text, With<Hud>>,
 ) {
     let Ok(mut text) = text.single_mut() else {
         return;
     };
     let on = popov_base.iter().any(|on| on);
-    let totals = &contacts.totals;
+    let totals = stickslip.modifier.totals().unwrap_or_default();
     let state = match (time.is_paused(), time.relative_speed() < 1.0) {
         (true, _) => "   [paused]",
         (false, true) => "   [slow motion x0.1]",
@@ -607,7 +630,7 @@ fn hud(
          contacts  {st} sticking, {ss} stick-slip, {sl} sliding;  friction dissipates {pw:.2} W\n\
          parts     green sticking, orange stick-slip, red sliding, white in flight\n\
          keys      V vibration  Space pause  S slow motion  R reset  G gizmos",
-        t = contacts.time,
+        t = stickslip.modifier.time(),
         vib = if on { "ON" } else { "OFF" },
         s0 = speeds.mean(0),
         s1 = speeds.mean(1),
@@ -637,7 +660,7 @@ fn place_labels(
 /// 20 kHz cannot be seen: a wave drawn under the vibrating base says it is on.
 fn vibration_cue(
     time: Res<Time>,
-    base: Query<&Transform, (With<PopovBase>, With<Vibration>)>,
+    base: Query<&Transform, (With<PopovBase>, With<StickSlipVibration>)>,
     mut gizmos: Gizmos,
 ) {
     let phase = time.elapsed_secs() * 6.0;

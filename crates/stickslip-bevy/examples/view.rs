@@ -7,7 +7,15 @@
 //! blue. The contact gizmos show each contact's friction force and normal. The HUD shows the
 //! scenario's name and description, the time, and the contacts by regime.
 //!
+//! The camera frames the moving bodies whole (their bounding boxes in the camera's field of
+//! view), and the contact gizmos are scaled to the scene: the heaviest body's weight draws as
+//! a quarter of the framed region.
+//!
 //! Keys: Space pause, S slow motion (×0.1), R reload the file and restart, G contact gizmos.
+//!
+//! A bevy_rapier app: the scenario's bodies are bevy_rapier entities (`RigidBody`, child
+//! `Collider`s, `Friction`, …) with stickslip's components, bevy_rapier steps them in the
+//! fixed schedule at the scenario's dt, stickslip brackets every step.
 //!
 //! ```sh
 //! cargo run --release -p stickslip-bevy --features window,scenario --example view -- \
@@ -22,16 +30,20 @@ use bevy::diagnostic::FrameCount;
 use bevy::prelude::*;
 use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured, save_to_disk};
 use bevy::time::TimeUpdateStrategy;
-use rapier3d::prelude::ShapeType;
+use bevy_rapier3d::prelude::*;
+use bevy_rapier3d::rapier::geometry::ShapeType;
 use std::path::PathBuf;
 use std::time::Duration;
-use stickslip_bevy::debug::{StickSlipGizmos, regime_color};
-use stickslip_bevy::prelude::*;
+use stickslip_bevy::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
 use stickslip_bevy::scenario::{
-    LoadedScenario, Scenario, StickSlipScenarioPlugin, despawn_scenario, spawn_scenario,
+    DriverAction, LoadedScenario, Scenario, StickSlipScenarioPlugin, despawn_scenario,
+    spawn_scenario,
 };
-use stickslip_scenario::DriverAction;
-use stickslip_scenario::spec::BodyKind;
+use stickslip_bevy::{StickSlipContacts, StickSlipRapier, StickSlipRapierPlugin};
+use stickslip_core::law::Regime;
+
+/// The window's size (px).
+const WINDOW: (u32, u32) = (1280, 720);
 
 fn main() -> AppExit {
     let options = match Options::parse(std::env::args().skip(1)) {
@@ -64,15 +76,18 @@ fn main() -> AppExit {
     app.add_plugins(DefaultPlugins.set(WindowPlugin {
         primary_window: Some(Window {
             title: format!("stickslip: {}", scenario.name),
-            resolution: (1280, 720).into(),
+            resolution: WINDOW.into(),
             ..default()
         }),
         ..default()
     }))
-    // With feature `debug` (on with `window`) the group includes the contact gizmos.
+    // bevy_rapier in the fixed schedule (its timestep set to the scenario's dt on load),
+    // stickslip beside it, the contact gizmos, the scenario's drivers.
+    .add_plugins(RapierPhysicsPlugin::<NoUserData>::default().in_fixed_schedule())
     .add_plugins((
-        StickSlipPlugins::default(),
-        StickSlipScenarioPlugin::default(),
+        StickSlipRapierPlugin::default().in_fixed_schedule(),
+        StickSlipDebugPlugin,
+        StickSlipScenarioPlugin::new(FixedUpdate),
     ))
     .insert_resource(ClearColor(Color::srgb(0.09, 0.1, 0.12)))
     .insert_resource(source)
@@ -211,7 +226,7 @@ fn setup(mut commands: Commands, mut materials: ResMut<Assets<StandardMaterial>>
     ));
 }
 
-/// Spawns the current scenario and points the camera at its moving bodies.
+/// Spawns the current scenario, frames its moving bodies and scales the gizmos to it.
 fn load(world: &mut World) {
     let scenario = world.resource::<Current>().0.clone();
     if let Err(e) = spawn_scenario(world, &scenario) {
@@ -219,34 +234,26 @@ fn load(world: &mut World) {
         world.write_message(AppExit::error());
         return;
     }
-    let (centre, radius) = framing(world.resource::<LoadedScenario>());
-    let eye = centre + Vec3::new(0.5, 1.4, 1.0).normalize() * (radius * 2.8).max(0.6);
+    let loaded = world.resource::<LoadedScenario>();
+    let fov = PerspectiveProjection::default().fov;
+    let camera = loaded.framing(fov, WINDOW.0 as f32 / WINDOW.1 as f32);
+    let size = (loaded.region.1 - loaded.region.0).length();
+    let weight = loaded.max_weight();
     let mut cameras = world.query_filtered::<&mut Transform, With<Camera3d>>();
     for mut t in cameras.iter_mut(world) {
-        *t = Transform::from_translation(eye).looking_at(centre, Vec3::Y);
+        *t = camera;
     }
-}
-
-/// Centre and radius of the region worth looking at: the non-fixed bodies' start positions
-/// (all bodies when every one is fixed), with some margin for their travel.
-fn framing(loaded: &LoadedScenario) -> (Vec3, f32) {
-    let moving: Vec<Vec3> = loaded
-        .bodies
-        .iter()
-        .filter(|b| b.kind != BodyKind::Fixed)
-        .map(|b| b.start)
-        .collect();
-    let points = if moving.is_empty() {
-        loaded.bodies.iter().map(|b| b.start).collect()
+    // Arrows: the heaviest body's weight is a quarter of the region (friction is less).
+    let mut store = world.resource_mut::<GizmoConfigStore>();
+    let (config, gizmos) = store.config_mut::<StickSlipGizmos>();
+    config.line.width = 2.5;
+    gizmos.force_scale = if weight > 0.0 {
+        0.25 * size / weight
     } else {
-        moving
+        0.0
     };
-    if points.is_empty() {
-        return (Vec3::ZERO, 1.0);
-    }
-    let min = points.iter().fold(Vec3::splat(f32::MAX), |a, p| a.min(*p));
-    let max = points.iter().fold(Vec3::splat(f32::MIN), |a, p| a.max(*p));
-    ((min + max) / 2.0, ((max - min).length() / 2.0).max(0.6))
+    gizmos.normal_length = 0.06 * size;
+    gizmos.point_radius = 0.008 * size;
 }
 
 fn keys(
@@ -298,7 +305,7 @@ fn add_meshes(
         if !loaded.colliders.contains(&entity) {
             continue;
         }
-        let shape = &collider.shape;
+        let shape = &collider.raw;
         let mesh: Mesh = match shape.shape_type() {
             ShapeType::Cuboid => {
                 let h = shape.as_cuboid().unwrap().half_extents;
@@ -343,7 +350,7 @@ fn add_meshes(
 
 /// Dynamic bodies' colliders in the colour of their contacts' regime (white without contact).
 fn colour_bodies(
-    contacts: Res<ContactReports>,
+    contacts: Res<StickSlipContacts>,
     palette: Res<Palette>,
     mut parts: Query<(Entity, &mut MeshMaterial3d<StandardMaterial>), With<Part>>,
 ) {
@@ -363,14 +370,14 @@ fn colour_bodies(
 /// Spring drivers as yellow zigzags from their (moving) anchor to the body point.
 fn draw_springs(
     loaded: Option<Res<LoadedScenario>>,
-    contacts: Res<ContactReports>,
+    stickslip: Res<StickSlipRapier>,
     bodies: Query<&GlobalTransform>,
     mut gizmos: Gizmos,
 ) {
     let Some(loaded) = loaded else {
         return;
     };
-    let t = contacts.time - loaded.start_time;
+    let t = stickslip.modifier.time() - loaded.start_time;
     for d in loaded.drivers() {
         let DriverAction::Spring {
             anchor,
@@ -387,7 +394,7 @@ fn draw_springs(
         let a = Vec3::from_array(std::array::from_fn(|k| {
             (anchor[k] + anchor_velocity[k] * t) as f32
         }));
-        let p = body.transform_point(Vec3::from_array(point.to_array()));
+        let p = body.transform_point(*point);
         let along = p - a;
         let side = along.any_orthonormal_vector() * 0.02;
         let points = (0..=16).map(|i| {
@@ -408,7 +415,7 @@ fn draw_springs(
 }
 
 fn hud(
-    contacts: Res<ContactReports>,
+    stickslip: Res<StickSlipRapier>,
     time: Res<Time<Virtual>>,
     loaded: Option<Res<LoadedScenario>>,
     mut text: Query<&mut Text, With<Hud>>,
@@ -416,7 +423,7 @@ fn hud(
     let (Ok(mut text), Some(loaded)) = (text.single_mut(), loaded) else {
         return;
     };
-    let totals = &contacts.totals;
+    let totals = stickslip.modifier.totals().unwrap_or_default();
     let state = match (time.is_paused(), time.relative_speed() < 1.0) {
         (true, _) => "   [paused]",
         (false, true) => "   [slow motion x0.1]",
@@ -431,7 +438,7 @@ fn hud(
          bodies    green sticking, orange stick-slip, red sliding, white no contact\n\
          keys      Space pause  S slow motion  R reload + restart  G gizmos",
         name = loaded.name,
-        t = contacts.time - loaded.start_time,
+        t = stickslip.modifier.time() - loaded.start_time,
         description = wrap(&loaded.description, 100),
         bodies = loaded.bodies.len(),
         st = totals.sticking,

@@ -1,14 +1,16 @@
-//! Debug gizmos: every stickslip contact as a dot coloured by regime (green sticking, orange
-//! stick-slip, red sliding), its friction force as an arrow in the same colour and its normal
-//! as a white ray.
+//! Contact gizmos (feature `debug`): every stickslip contact of [`crate::StickSlipContacts`] as
+//! a dot coloured by regime (green sticking, orange stick-slip, red sliding), its friction
+//! force as an arrow in that colour and its normal as a white ray. Needs bevy's `GizmoPlugin`;
+//! turns the modifier's contact read-back on.
 
-use crate::contacts::ContactReports;
+use crate::{StickSlipContacts, StickSlipRapier};
 use bevy::gizmos::GizmoPlugin;
 use bevy::prelude::*;
 use bevy::transform::TransformSystems;
 use stickslip_core::law::Regime;
+use stickslip_rapier_035::ReadBack;
 
-/// Settings of the contact gizmos. Toggle them with
+/// Settings of the contact gizmos; toggle them with
 /// `GizmoConfigStore::config_mut::<StickSlipGizmos>().0.enabled`.
 #[derive(Reflect, GizmoConfigGroup, Debug, Clone)]
 pub struct StickSlipGizmos {
@@ -39,10 +41,8 @@ pub fn regime_color(regime: Regime) -> Color {
     }
 }
 
-/// Draws the contacts of [`ContactReports`] in `PostUpdate`, after transform propagation.
-/// It needs bevy's `GizmoPlugin` (in `DefaultPlugins` with bevy's gizmo features) and does
-/// nothing without it, so the plugin group stays usable headless; it looks in
-/// [`Plugin::finish`], when every plugin is in, so the order of `add_plugins` does not matter.
+/// Draws the contacts in `PostUpdate` after transform propagation; does nothing without
+/// bevy's `GizmoPlugin` (looked for in [`Plugin::finish`], so plugin order does not matter).
 pub struct StickSlipDebugPlugin;
 
 impl Plugin for StickSlipDebugPlugin {
@@ -52,6 +52,11 @@ impl Plugin for StickSlipDebugPlugin {
         if !app.is_plugin_added::<GizmoPlugin>() {
             debug!("stickslip contact gizmos off: no GizmoPlugin in this app");
             return;
+        }
+        if let Some(mut state) = app.world_mut().get_resource_mut::<StickSlipRapier>()
+            && state.modifier.read_back() != ReadBack::Contacts
+        {
+            state.modifier.set_read_back(ReadBack::Contacts);
         }
         // Drawn on top: contacts hide under the parts.
         let config = GizmoConfig {
@@ -68,10 +73,11 @@ impl Plugin for StickSlipDebugPlugin {
     }
 }
 
-fn draw_contacts(contacts: Res<ContactReports>, mut gizmos: Gizmos<StickSlipGizmos>) {
+fn draw_contacts(contacts: Res<StickSlipContacts>, mut gizmos: Gizmos<StickSlipGizmos>) {
     let cfg = gizmos.config_ext.clone();
-    for c in &contacts.contacts {
-        let (r, p) = (&c.report, c.point);
+    for c in &contacts.0 {
+        let r = &c.report;
+        let p = Vec3::from_array(r.point);
         let color = regime_color(r.regime);
         gizmos.sphere(p, cfg.point_radius, color);
         let f = Vec3::from_array(r.friction_force) * cfg.force_scale;
@@ -79,7 +85,11 @@ fn draw_contacts(contacts: Res<ContactReports>, mut gizmos: Gizmos<StickSlipGizm
             gizmos.arrow(p, p + f, color);
         }
         if cfg.normal_length > 0.0 {
-            gizmos.ray(p, c.normal * cfg.normal_length, Color::WHITE);
+            gizmos.ray(
+                p,
+                Vec3::from_array(r.normal) * cfg.normal_length,
+                Color::WHITE,
+            );
         }
     }
 }

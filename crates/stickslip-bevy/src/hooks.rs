@@ -1,29 +1,72 @@
-//! The plugin's own rapier hooks, wrapped by the stickslip modifier: moving surfaces.
+//! The rapier hooks of a bracketed step: the app's own `BevyPhysicsHooks` first on every
+//! pair, then the surface velocities, then stickslip on the pairs it was given.
 
-use rapier3d::prelude as rp;
+use bevy::prelude::*;
+use bevy_rapier3d::pipeline::{ContactModificationContextView, PairFilterContextView};
+use bevy_rapier3d::prelude::BevyPhysicsHooks;
+use bevy_rapier3d::rapier::geometry::{ColliderHandle, SolverFlags};
+use bevy_rapier3d::rapier::pipeline::{
+    ContactModificationContext, PairFilterContext, PhysicsHooks,
+};
 use std::collections::HashMap;
+use stickslip_rapier_035::StickSlip;
 
-/// Gives the contacts of colliders with a `SurfaceVelocity` their target tangent velocity.
-#[derive(Debug, Default)]
-pub struct SurfaceHooks {
-    pub(crate) surfaces: HashMap<rp::ColliderHandle, rp::Vector>,
+/// The app's hooks as rapier hooks, then the surface velocities.
+pub(crate) struct UserHooks<'a, T> {
+    pub(crate) user: &'a T,
+    pub(crate) surfaces: &'a HashMap<ColliderHandle, Vec3>,
 }
 
-impl rp::PhysicsHooks for SurfaceHooks {
-    fn modify_solver_contacts(&self, ctx: &mut rp::ContactModificationContext) {
-        // tangent_velocity is the target velocity of collider 2 relative to collider 1.
-        let v1 = self.surfaces.get(&ctx.collider1).copied();
-        let v2 = self.surfaces.get(&ctx.collider2).copied();
-        if v1.is_none() && v2.is_none() {
+impl<T: BevyPhysicsHooks> PhysicsHooks for UserHooks<'_, T> {
+    fn filter_contact_pair(&self, context: &PairFilterContext) -> Option<SolverFlags> {
+        self.user
+            .filter_contact_pair(PairFilterContextView { raw: context })
+    }
+
+    fn filter_intersection_pair(&self, context: &PairFilterContext) -> bool {
+        self.user
+            .filter_intersection_pair(PairFilterContextView { raw: context })
+    }
+
+    fn modify_solver_contacts(&self, context: &mut ContactModificationContext) {
+        let (c1, c2) = (context.collider1, context.collider2);
+        self.user
+            .modify_solver_contacts(ContactModificationContextView { raw: &mut *context });
+        if self.surfaces.is_empty() {
             return;
         }
-        let v = v1.unwrap_or(rp::Vector::ZERO) - v2.unwrap_or(rp::Vector::ZERO);
-        if let Some(m) = ctx.rigid_mut() {
-            let n = *m.normal;
-            let tangential = v - n * n.dot(v);
-            for c in m.solver_contacts.iter_mut() {
-                c.tangent_velocity = tangential;
+        // tangent_velocity is the target velocity of collider 2 relative to collider 1.
+        let v = self.surfaces.get(&c1).copied().unwrap_or(Vec3::ZERO)
+            - self.surfaces.get(&c2).copied().unwrap_or(Vec3::ZERO);
+        if v != Vec3::ZERO {
+            let n = *context.normal;
+            let v = v - n * n.dot(v);
+            for c in context.solver_contacts.iter_mut() {
+                c.tangent_velocity += v;
             }
+        }
+    }
+}
+
+/// The hooks rapier gets: stickslip (when it brackets this context) wrapping the app's.
+pub(crate) struct StepHooks<'a, T> {
+    pub(crate) stickslip: Option<&'a StickSlip>,
+    pub(crate) user: UserHooks<'a, T>,
+}
+
+impl<T: BevyPhysicsHooks> PhysicsHooks for StepHooks<'_, T> {
+    fn filter_contact_pair(&self, context: &PairFilterContext) -> Option<SolverFlags> {
+        self.user.filter_contact_pair(context)
+    }
+
+    fn filter_intersection_pair(&self, context: &PairFilterContext) -> bool {
+        self.user.filter_intersection_pair(context)
+    }
+
+    fn modify_solver_contacts(&self, context: &mut ContactModificationContext) {
+        match self.stickslip {
+            Some(s) => s.modify_solver_contacts_with(context, &self.user),
+            None => self.user.modify_solver_contacts(context),
         }
     }
 }

@@ -1,114 +1,191 @@
-//! # stickslip-bevy
-//!
-//! bevy 0.19 plugins for stickslip: friction that sticks without creep, breaks away, follows
-//! a Stribeck curve and changes when a surface vibrates, on bevy entities. bevy_rapier for
-//! bevy 0.19 pins another rapier, so this crate drives rapier3d 0.36 itself (one world in the
-//! [`StickSlipWorld`] resource) through `stickslip-rapier`'s contact modifier.
-//!
-//! - [`StickSlipPlugins`] (a `PluginGroup`):
-//!   - [`StickSlipPhysicsPlugin`], the rapier bridge: [`RigidBody`], [`Collider`] (on the body
-//!     or on a child), [`Velocity`], [`ExternalForce`], [`Density`] or [`ColliderMass`],
-//!     [`Friction`] (rapier's own Coulomb), [`Restitution`], [`Damping`], [`Ccd`],
-//!     [`LockRotations`], [`AllowSleep`]; `Transform` in and out.
-//!   - [`StickSlipFrictionPlugin`], the friction layer: [`FrictionLaw`] per collider (or the
-//!     [`DefaultFriction`] resource's material), [`Vibration`], [`SurfaceVelocity`] (belts),
-//!     and the read-back: the [`ContactReports`] resource and [`RegimeChanged`] messages.
-//!   - with feature `debug`, `debug::StickSlipDebugPlugin`: contact gizmos coloured by
-//!     regime.
-//! - with feature `scenario`, `scenario`: the TOML scenarios of `stickslip run` spawned as
-//!   entities, their drivers acting on them (`cargo run -p stickslip-bevy --features
-//!   window,scenario --example view -- scenarios/incline.toml`).
-//! - Physics runs in `FixedPostUpdate` by default, in the chained sets [`StickSlipSystems`]
-//!   before transform propagation; `StickSlipPlugins::new(schedule)` picks another schedule.
-//!   The step is the schedule's `Time` delta (`Time<Fixed>`'s timestep in fixed schedules), so
-//!   pausing or slowing bevy's virtual time pauses or slows the physics.
-//! - Despawning or removing components takes rapier bodies, colliders and stickslip state
-//!   with them (observers, at once).
-//! - bevy's glam (0.32) and rapier's (0.33) are different types: [`convert`] is the one place
-//!   that converts.
-//!
-//! ## Quick start
+//! stickslip as an add-on to bevy_rapier3d 0.36 (bevy 0.19): a bevy_rapier app keeps its
+//! `RapierPhysicsPlugin`, components and systems, adds [`StickSlipRapierPlugin`], and gets
+//! stickslip's friction on the colliders it marks with [`StickSlipFriction`].
 //!
 //! ```
 //! use bevy::prelude::*;
-//! use bevy::time::TimeUpdateStrategy;
-//! use stickslip_bevy::prelude::*;
+//! use bevy_rapier3d::prelude::*;
+//! use stickslip_bevy::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin};
 //!
 //! let mut app = App::new();
-//! app.add_plugins((MinimalPlugins, StickSlipPlugins::default()))
-//!     .insert_resource(Time::<Fixed>::from_hz(120.0))
-//!     // Headless and deterministic: every update runs one fixed step.
-//!     .insert_resource(TimeUpdateStrategy::FixedTimesteps(1));
-//! // A fixed ground under stickslip's default elasto-plastic friction, and a box on it.
-//! app.world_mut().spawn((
-//!     RigidBody::Fixed,
-//!     Collider::cuboid(5.0, 0.1, 5.0),
-//!     FrictionLaw::default(),
-//! ));
-//! let part = app
+//! app.add_plugins((MinimalPlugins, TransformPlugin))
+//!     // The app's bevy_rapier, as it was (any timestep mode, its own hooks type).
+//!     .add_plugins(RapierPhysicsPlugin::<NoUserData>::default())
+//!     // stickslip: one plugin (same hooks type and schedule as bevy_rapier's) …
+//!     .add_plugins(StickSlipRapierPlugin::default());
+//! app.update();
+//! // … and one component on the colliders whose pairs get stickslip's friction.
+//! let ground = app
 //!     .world_mut()
-//!     .spawn((
-//!         RigidBody::Dynamic,
-//!         Collider::cuboid(0.1, 0.1, 0.1),
-//!         Transform::from_xyz(0.0, 0.2, 0.0),
-//!     ))
+//!     .spawn((RigidBody::Fixed, Collider::cuboid(5.0, 0.1, 5.0), StickSlipFriction(None)))
 //!     .id();
-//! for _ in 0..121 {
-//!     app.update(); // the first update has no time step; each later one runs one fixed step
-//! }
-//! let y = app.world().get::<Transform>(part).unwrap().translation.y;
-//! assert!((y - 0.2).abs() < 1e-3, "the box rests on the ground: y = {y}");
-//! let contacts = app.world().resource::<ContactReports>();
-//! assert_eq!(contacts.regime_of(part), Some(Regime::Sticking));
-//! assert!((contacts.time - 1.0).abs() < 1e-6, "one simulated second");
+//! app.update();
+//! assert!(app.world().resource::<StickSlipRapier>().is_attached(ground));
 //! ```
+//!
+//! How it brackets rapier's steps: bevy_rapier's step system runs all the rapier steps of a
+//! frame (substeps, `Interpolated` catch-up) in one call, where nothing can run between two
+//! steps. The plugin therefore takes that system's place in `PhysicsSet::StepSimulation`
+//! with its own, which runs the same rapier steps through bevy_rapier's context one at a
+//! time, each between `StickSlip::begin_step` and `end_step`, with the same events, hooks and
+//! transform interpolation — in every `TimestepMode` (Fixed, Variable, Interpolated, any
+//! substeps). If bevy_rapier's step system is not found (another hooks type or schedule than
+//! the plugin's), an error says so at startup and stickslip stays off: the app keeps rapier's
+//! own friction, never a silently wrong one.
+//!
+//! The app's own `BevyPhysicsHooks` (a one-way platform, …) keep working: name them in both
+//! plugins, `RapierPhysicsPlugin::<MyHooks>` and
+//! `StickSlipRapierPlugin::default().with_hooks::<MyHooks>()`; they run first on every pair.
+//! stickslip acts on the default rapier context; other contexts step as in bevy_rapier.
+
 #![warn(missing_docs)]
 
 mod components;
-mod contacts;
-pub mod convert;
 #[cfg(feature = "debug")]
 pub mod debug;
-mod friction;
 mod hooks;
-mod plugin;
-mod removal;
 #[cfg(feature = "scenario")]
 pub mod scenario;
-mod spawn;
+mod state;
 mod step;
-mod world;
-mod writeback;
+mod sync;
 
-pub use components::{
-    AllowSleep, Ccd, Collider, ColliderMass, Damping, Density, ExternalForce, Friction,
-    FrictionCombine, LockRotations, RapierBody, RapierCollider, Restitution, RigidBody, Velocity,
-};
-pub use contacts::{Contact, ContactReports, RegimeChanged};
-pub use friction::{DefaultFriction, FrictionLaw, SurfaceVelocity, Vibration, default_material};
-pub use hooks::SurfaceHooks;
-pub use plugin::{
-    StickSlipFrictionPlugin, StickSlipPhysicsPlugin, StickSlipPlugins, StickSlipSystems,
-};
-pub use step::Gravity;
-pub use world::StickSlipWorld;
+pub use components::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
+pub use state::{EntityContact, RegimeChanged, StickSlipContacts, StickSlipRapier};
 
-pub use stickslip_core as core;
-pub use stickslip_rapier as rapier;
+use bevy::ecs::intern::Interned;
+use bevy::ecs::schedule::{ScheduleCleanupPolicy, ScheduleLabel};
+use bevy::ecs::system::SystemParamItem;
+use bevy::prelude::*;
+use bevy_rapier3d::plugin::systems::step_simulation;
+use bevy_rapier3d::prelude::*;
+use std::marker::PhantomData;
+use stickslip_rapier_035::{FrictionMaterial, StickSlip};
 
-/// Everything a typical app uses: the plugins, components, resources and messages, and the
-/// stickslip types they wrap.
-pub mod prelude {
-    pub use crate::{
-        AllowSleep, Ccd, Collider, ColliderMass, Contact, ContactReports, Damping, DefaultFriction,
-        Density, ExternalForce, Friction, FrictionLaw, Gravity, LockRotations, RegimeChanged,
-        Restitution, RigidBody, StickSlipPlugins, StickSlipSystems, StickSlipWorld,
-        SurfaceVelocity, Velocity, Vibration,
-    };
-    pub use stickslip_core::law::{Law, Regime};
-    pub use stickslip_core::waveform::Waveform;
-    pub use stickslip_rapier::{
-        Amplitude, FrictionMaterial, VibrationComponent, VibrationDirection, VibrationMode,
-        VibrationSource,
-    };
+/// Adds stickslip to a bevy_rapier app (see the crate docs). `H` is the app's
+/// `BevyPhysicsHooks` type, the one of its `RapierPhysicsPlugin::<H>` (`()` is bevy_rapier's
+/// `NoUserData`).
+pub struct StickSlipRapierPlugin<H = ()> {
+    default_material: FrictionMaterial,
+    schedule: Interned<dyn ScheduleLabel>,
+    hooks: PhantomData<fn() -> H>,
+}
+
+impl StickSlipRapierPlugin {
+    /// stickslip with this material for colliders marked `StickSlipFriction(None)`, beside
+    /// `RapierPhysicsPlugin::<NoUserData>` in `PostUpdate`.
+    pub fn new(default_material: FrictionMaterial) -> Self {
+        StickSlipRapierPlugin {
+            default_material,
+            schedule: PostUpdate.intern(),
+            hooks: PhantomData,
+        }
+    }
+
+    /// The app's own hooks type, as in its `RapierPhysicsPlugin::<H>`.
+    pub fn with_hooks<H>(self) -> StickSlipRapierPlugin<H> {
+        StickSlipRapierPlugin {
+            default_material: self.default_material,
+            schedule: self.schedule,
+            hooks: PhantomData,
+        }
+    }
+}
+
+impl<H> StickSlipRapierPlugin<H> {
+    /// The schedule bevy_rapier runs in (`RapierPhysicsPlugin::in_schedule`).
+    pub fn in_schedule(mut self, schedule: impl ScheduleLabel) -> Self {
+        self.schedule = schedule.intern();
+        self
+    }
+
+    /// bevy_rapier in `FixedUpdate` (`RapierPhysicsPlugin::in_fixed_schedule`).
+    pub fn in_fixed_schedule(self) -> Self {
+        self.in_schedule(FixedUpdate)
+    }
+
+    /// The material of colliders marked `StickSlipFriction(None)`.
+    pub fn with_default_material(mut self, material: FrictionMaterial) -> Self {
+        self.default_material = material;
+        self
+    }
+}
+
+impl Default for StickSlipRapierPlugin {
+    /// Elasto-plastic friction with rapier's default coefficient 0.5 for break-away, static
+    /// and sliding friction, contact stiffness c = 1e5 1/m: sticking without creep.
+    fn default() -> Self {
+        use stickslip_core::law::{Coulomb, Law};
+        use stickslip_core::sliding_curve::Curve;
+        let law = Curve::constant(0.5)
+            .and_then(|c| Law::elasto_plastic(1e5, 0.5, 0.5, c))
+            .unwrap_or_else(|_| Law::Coulomb(Coulomb::clamped(0.5)));
+        StickSlipRapierPlugin::new(FrictionMaterial::new(law))
+    }
+}
+
+impl<H> Plugin for StickSlipRapierPlugin<H>
+where
+    H: BevyPhysicsHooks + 'static,
+    for<'w, 's> SystemParamItem<'w, 's, H>: BevyPhysicsHooks,
+{
+    fn build(&self, app: &mut App) {
+        app.insert_resource(StickSlipRapier::new(StickSlip::new(
+            self.default_material.clone(),
+        )))
+        .init_resource::<StickSlipContacts>()
+        .init_resource::<state::LastRegimes>()
+        .add_message::<RegimeChanged>()
+        .add_systems(
+            self.schedule,
+            (sync::attach, sync::sync_vibrations, sync::sync_surfaces)
+                .chain()
+                .after(PhysicsSet::SyncBackend)
+                .before(PhysicsSet::StepSimulation),
+        );
+
+        // bevy_rapier's step system is replaced at startup, when every plugin is built
+        // (whatever the order they were added in; `App::update` alone never calls
+        // `Plugin::finish`).
+        let schedule = self.schedule;
+        app.add_systems(PreStartup, move |world: &mut World| {
+            take_over_step::<H>(world, schedule)
+        });
+    }
+}
+
+/// Replaces bevy_rapier's step system for hooks `H` in `schedule` by the bracketed one; or,
+/// if it is not there, says so and leaves stickslip off.
+fn take_over_step<H>(world: &mut World, schedule: Interned<dyn ScheduleLabel>)
+where
+    H: BevyPhysicsHooks + 'static,
+    for<'w, 's> SystemParamItem<'w, 's, H>: BevyPhysicsHooks,
+{
+    let removed = world.try_schedule_scope(schedule, |world, s| {
+        s.remove_systems_in_set(
+            step_simulation::<H>,
+            world,
+            ScheduleCleanupPolicy::RemoveSystemsOnly,
+        )
+    });
+    if let Ok(Ok(n)) = removed
+        && n > 0
+    {
+        world.resource_mut::<Schedules>().add_systems(
+            schedule,
+            step::step_simulation_bracketed::<H>.in_set(PhysicsSet::StepSimulation),
+        );
+        return;
+    }
+    error!(
+        "stickslip: bevy_rapier's step system `step_simulation::<{}>` is not in schedule \
+         {:?}: add RapierPhysicsPlugin::<H> with the same hooks type H and schedule as \
+         StickSlipRapierPlugin (with_hooks::<H>(), in_schedule(..)). stickslip is off: this \
+         app has rapier's own friction",
+        std::any::type_name::<H>(),
+        schedule
+    );
+    if let Some(mut state) = world.get_resource_mut::<StickSlipRapier>() {
+        state.active = false;
+    }
 }

@@ -1,68 +1,277 @@
-//! The step: user inputs into rapier, then one step of the world with the stickslip modifier.
+//! stickslip's replacement for bevy_rapier's step system: the very rapier steps bevy_rapier
+//! would run in the frame (substeps, `Interpolated` catch-up included), each one bracketed by
+//! `StickSlip::begin_step`/`end_step` — bevy_rapier's own system runs them all in one call,
+//! where nothing can be done between two steps.
 
-use crate::components::*;
-use crate::convert::{pose_of, to_rapier};
-use crate::world::StickSlipWorld;
+use crate::hooks::{StepHooks, UserHooks};
+use crate::state::{
+    LastRegimes, RegimeChanged, StickSlipContacts, StickSlipRapier, publish_reports,
+};
+use bevy::ecs::system::{StaticSystemParam, SystemParam, SystemParamItem};
 use bevy::prelude::*;
+use bevy_rapier3d::plugin::context::{
+    DefaultRapierContext, RapierContextColliders, RapierContextJoints, RapierContextSimulation,
+    RapierRigidBodySet, SimulationToRenderTime,
+};
+use bevy_rapier3d::prelude::*;
 
-/// Gravity of the world (m/s², default −9.81 along y).
-#[derive(Resource, Debug, Clone, Copy, PartialEq)]
-pub struct Gravity(pub Vec3);
+/// The rapier steps of one frame, exactly as bevy_rapier 0.36's `step_simulation` runs them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct FrameSteps {
+    /// Rounds of `substeps` steps: 1, or `Interpolated`'s catch-up count (0 when the
+    /// simulation is ahead of the render time).
+    pub(crate) rounds: usize,
+    /// Rapier steps per round.
+    pub(crate) substeps: usize,
+    /// The dt of every rapier step (s).
+    pub(crate) step_dt: f32,
+    /// The `integration_parameters.dt` bevy_rapier leaves behind (the frame's dt).
+    pub(crate) frame_dt: f32,
+    /// Whether the last round first records the bodies' poses for transform interpolation.
+    pub(crate) interpolated: bool,
+}
 
-impl Default for Gravity {
-    fn default() -> Self {
-        Gravity(Vec3::new(0.0, -9.81, 0.0))
+impl FrameSteps {
+    /// The frame's steps in `mode` after `delta` seconds of render time; `Interpolated`
+    /// moves `sim_to_render` (the simulation's lag behind the render time) as bevy_rapier
+    /// does. A non-positive or non-finite `Interpolated` dt runs no step (bevy_rapier's loop
+    /// would never end) and drops the lag.
+    pub(crate) fn new(mode: TimestepMode, delta: f32, sim_to_render: &mut f32) -> FrameSteps {
+        match mode {
+            TimestepMode::Fixed { dt, substeps } => FrameSteps {
+                rounds: 1,
+                substeps,
+                step_dt: dt / (substeps as f32),
+                frame_dt: dt,
+                interpolated: false,
+            },
+            TimestepMode::Variable {
+                max_dt,
+                time_scale,
+                substeps,
+            } => {
+                let frame_dt = (delta * time_scale).min(max_dt);
+                FrameSteps {
+                    rounds: 1,
+                    substeps,
+                    step_dt: frame_dt / (substeps as f32),
+                    frame_dt,
+                    interpolated: false,
+                }
+            }
+            TimestepMode::Interpolated {
+                dt,
+                time_scale,
+                substeps,
+            } => {
+                let mut rounds = 0;
+                *sim_to_render += delta;
+                if dt > 0.0 && dt.is_finite() && sim_to_render.is_finite() {
+                    // The same float operations as bevy_rapier's loop, so the same count.
+                    while *sim_to_render > 0.0 {
+                        rounds += 1;
+                        *sim_to_render -= dt;
+                    }
+                } else {
+                    *sim_to_render = 0.0;
+                }
+                FrameSteps {
+                    rounds,
+                    substeps,
+                    step_dt: dt / (substeps as f32) * time_scale,
+                    frame_dt: dt,
+                    interpolated: true,
+                }
+            }
+        }
     }
 }
 
-/// What the user changed since the last writeback goes into rapier: poses of kinematic
-/// bodies and teleports, velocities, external forces. (The writeback leaves each `Transform`
-/// and `Velocity` equal to rapier's state, so any difference here is the user's.)
-pub(crate) fn apply_inputs(
-    mut w: ResMut<StickSlipWorld>,
-    bodies: Query<(
-        &RigidBody,
-        &RapierBody,
-        &Transform,
-        &Velocity,
-        Option<&ExternalForce>,
-    )>,
-) {
-    for (kind, h, transform, velocity, force) in &bodies {
-        let Some(b) = w.physics.bodies.get_mut(h.0) else {
+/// What a step writes besides the rapier context.
+#[derive(SystemParam)]
+pub(crate) struct StepOutputs<'w> {
+    contacts: ResMut<'w, StickSlipContacts>,
+    last: ResMut<'w, LastRegimes>,
+    changed: MessageWriter<'w, RegimeChanged>,
+    collision_events: MessageWriter<'w, CollisionEvent>,
+    contact_force_events: MessageWriter<'w, ContactForceEvent>,
+}
+
+type Context = (
+    &'static mut RapierContextSimulation,
+    &'static mut RapierContextColliders,
+    &'static mut RapierContextJoints,
+    &'static mut RapierRigidBodySet,
+    &'static RapierConfiguration,
+    &'static mut SimulationToRenderTime,
+    Has<DefaultRapierContext>,
+);
+
+/// bevy_rapier's `step_simulation::<H>`, one rapier step at a time: stickslip brackets the
+/// steps of the default context; the app's hooks `H` run in every context.
+pub(crate) fn step_simulation_bracketed<H>(
+    mut contexts: Query<Context>,
+    mode: Res<TimestepMode>,
+    time: Res<Time>,
+    mut state: ResMut<StickSlipRapier>,
+    user: StaticSystemParam<H>,
+    mut out: StepOutputs,
+    mut interpolation: Query<(&RapierRigidBodyHandle, &mut TransformInterpolation)>,
+) where
+    H: SystemParam + 'static,
+    for<'w, 's> SystemParamItem<'w, 's, H>: BevyPhysicsHooks,
+{
+    let user = &*user;
+    let state = &mut *state;
+    let out = &mut out;
+    for (mut sim, mut colliders, mut joints, mut bodies, config, mut to_render, is_default) in
+        &mut contexts
+    {
+        let (sim, colliders, joints, bodies) =
+            (&mut *sim, &mut *colliders, &mut *joints, &mut *bodies);
+        if !config.physics_pipeline_active {
+            bodies.propagate_modified_body_positions_to_colliders(colliders);
+            sim.send_bevy_events(&mut out.collision_events, &mut out.contact_force_events);
             continue;
-        };
-        let pose = pose_of(transform);
-        match kind {
-            RigidBody::KinematicPositionBased => b.set_next_kinematic_position(pose),
-            _ if *b.position() != pose => b.set_position(pose, true),
-            _ => {}
         }
-        let (lin, ang) = (to_rapier(velocity.linear), to_rapier(velocity.angular));
-        if !matches!(kind, RigidBody::KinematicPositionBased | RigidBody::Fixed)
-            && (b.linvel() != lin || b.angvel() != ang)
-        {
-            b.set_linvel(lin, true);
-            b.set_angvel(ang, true);
+        let bracket = is_default && state.active;
+        let steps = FrameSteps::new(*mode, time.delta_secs(), &mut to_render.diff);
+        for round in 0..steps.rounds {
+            if steps.interpolated && round + 1 == steps.rounds {
+                // The poses the rendered transforms interpolate from, before the last round.
+                for (handle, mut interpolation) in interpolation.iter_mut() {
+                    if let Some(body) = bodies.bodies.get(handle.0) {
+                        interpolation.start = Some(*body.position());
+                        interpolation.end = None;
+                    }
+                }
+            }
+            for _ in 0..steps.substeps {
+                if bracket {
+                    keep_awake(state, sim, colliders, bodies);
+                    let mut params = sim.integration_parameters;
+                    params.dt = steps.step_dt;
+                    state.modifier.begin_step(&params);
+                }
+                let hooks = StepHooks {
+                    stickslip: bracket.then_some(&state.modifier),
+                    user: UserHooks {
+                        user,
+                        surfaces: &state.surfaces,
+                    },
+                };
+                // One rapier step: bevy_rapier's Fixed mode with one substep of this dt.
+                sim.step_simulation(
+                    colliders,
+                    joints,
+                    bodies,
+                    config.gravity,
+                    TimestepMode::Fixed {
+                        dt: steps.step_dt,
+                        substeps: 1,
+                    },
+                    Some((&out.collision_events, &out.contact_force_events)),
+                    &hooks,
+                    &time,
+                    &mut to_render,
+                    None,
+                );
+                // Each call replaces the context's pending events: send them now.
+                sim.send_bevy_events(&mut out.collision_events, &mut out.contact_force_events);
+                if bracket {
+                    state.modifier.end_step(
+                        &sim.narrow_phase,
+                        &bodies.bodies,
+                        &colliders.colliders,
+                    );
+                    publish_reports(
+                        state,
+                        &colliders.colliders,
+                        &mut out.contacts,
+                        &mut out.last,
+                        &mut out.changed,
+                    );
+                }
+            }
         }
-        if let Some(f) = force {
-            b.reset_forces(false);
-            b.reset_torques(false);
-            b.add_force(to_rapier(f.force), true);
-            b.add_torque(to_rapier(f.torque), true);
+        sim.integration_parameters.dt = steps.frame_dt;
+    }
+}
+
+/// Keeps the bodies touching a vibrating or moving surface awake: such a surface is never at
+/// rest, though rapier sees no force on what it carries (a part conveyed at a few cm/s by a
+/// vibration would otherwise fall asleep under rapier's sleep threshold and stop dead).
+fn keep_awake(
+    state: &StickSlipRapier,
+    sim: &RapierContextSimulation,
+    colliders: &RapierContextColliders,
+    bodies: &mut RapierRigidBodySet,
+) {
+    let surfaces = state.vibrating.values().chain(state.surfaces.keys());
+    for &surface in surfaces {
+        for pair in sim.narrow_phase.contact_pairs_with(surface) {
+            if !pair.has_any_active_contact() {
+                continue;
+            }
+            let other = if pair.collider1 == surface {
+                pair.collider2
+            } else {
+                pair.collider1
+            };
+            let parent = colliders.colliders.get(other).and_then(|c| c.parent());
+            if let Some(body) = parent.and_then(|h| bodies.bodies.get_mut(h))
+                && body.is_dynamic()
+            {
+                body.wake_up(true);
+            }
         }
     }
 }
 
-/// One rapier step with the stickslip modifier over the schedule's time step: `Time<Fixed>`'s
-/// in fixed schedules. A zero step (virtual time paused) steps nothing.
-pub(crate) fn step_world(mut w: ResMut<StickSlipWorld>, time: Res<Time>, gravity: Res<Gravity>) {
-    let dt = time.delta_secs();
-    if dt.is_nan() || dt <= 0.0 {
-        return;
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// bevy_rapier's Interpolated loop, verbatim, counting rounds.
+    fn bevy_rapier_rounds(dt: f32, delta: f32, diff: &mut f32) -> usize {
+        let mut n = 0;
+        *diff += delta;
+        while *diff > 0.0 {
+            n += 1;
+            *diff -= dt;
+        }
+        n
     }
-    let w = &mut *w;
-    w.physics.integration_parameters.dt = dt;
-    w.physics.gravity = to_rapier(gravity.0);
-    w.friction.step(&mut w.physics);
+
+    #[test]
+    fn interpolated_rounds_match_bevy_rapiers_loop() {
+        let (mut a, mut b) = (0.0f32, 0.0f32);
+        let mode = TimestepMode::Interpolated {
+            dt: 1.0 / 60.0,
+            time_scale: 1.0,
+            substeps: 2,
+        };
+        // Frames of uneven length: catch-up rounds of 0, 1, 2, ….
+        for k in 0..500 {
+            let delta = [0.0, 1.0 / 144.0, 1.0 / 30.0, 0.05, 1.0 / 60.0][k % 5];
+            let steps = FrameSteps::new(mode, delta, &mut a);
+            assert_eq!(steps.rounds, bevy_rapier_rounds(1.0 / 60.0, delta, &mut b));
+            assert_eq!(a.to_bits(), b.to_bits());
+            assert_eq!(steps.step_dt, 1.0 / 60.0 / 2.0);
+        }
+    }
+
+    #[test]
+    fn a_degenerate_interpolated_dt_runs_nothing_and_never_hangs() {
+        for dt in [0.0, -1.0, f32::NAN, f32::INFINITY] {
+            let mut lag = 0.0;
+            let mode = TimestepMode::Interpolated {
+                dt,
+                time_scale: 1.0,
+                substeps: 1,
+            };
+            assert_eq!(FrameSteps::new(mode, 0.1, &mut lag).rounds, 0);
+            assert_eq!(lag, 0.0);
+        }
+    }
 }

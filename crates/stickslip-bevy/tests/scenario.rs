@@ -1,20 +1,26 @@
-//! A scenario file behaves the same in bevy as in `stickslip run`: every shipped scenario
-//! (`scenarios/*.toml`), spawned as entities by `spawn_scenario` and stepped by the plugins
-//! with its drivers, ends where the scenario crate's headless `Runner` ends after a second of
-//! simulated time: the same steps, and every body's rapier position and velocity bit for bit
-//! — or, where rapier's broad phase pairs two colliders the other way round than in the
-//! runner (the plugin registers them in another order; the contact normal is then flipped,
-//! which changes the solver's rounding by ulps, and a stick-slip event on a step boundary may
-//! then happen one step apart), within 10 µm + 0.1 % of its travel or two steps of its motion
-//! (2·dt·|v|): a box held on a vibrating trough wanders by micrometres across it, which way
-//! depends on those ulps. The test prints how many bodies are bit-identical. Reloading a scenario replaces its entities and leaves no rapier object behind.
+//! Scenario files as bevy_rapier apps (feature `scenario`). Invariants: every shipped
+//! scenario (`scenarios/*.toml`), spawned by `spawn_scenario` and stepped by bevy_rapier with
+//! stickslip and its drivers, ends where the scenario crate's headless `Runner` (the same
+//! rapier 0.35) ends after a second of simulated time (at most 2 000 steps): the same number
+//! of steps of the same length, and every body within 10 µm + 0.1 % of its travel or two
+//! steps of its motion (2·dt·|v|) — bevy_rapier builds its bodies and colliders in its own
+//! order and way, which changes the solver's rounding by ulps (the test prints how many
+//! bodies are bit-identical); the viewer's framing shows every moving body whole (all corners
+//! of their bounding boxes project inside a 16:9 view with bevy's default field of view) and
+//! not lost in the distance (the region spans at least a third of the view); reloading
+//! replaces the entities and leaves no rapier object behind; an invalid scenario is a typed
+//! error and spawns nothing.
 
+use bevy::camera::CameraProjection;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
+use bevy_rapier3d::plugin::context::{RapierContextColliders, RapierRigidBodySet};
+use bevy_rapier3d::prelude::*;
 use std::path::PathBuf;
-use stickslip_bevy::prelude::*;
+use std::time::Duration;
 use stickslip_bevy::scenario::{LoadedScenario, Scenario, StickSlipScenarioPlugin, spawn_scenario};
-use stickslip_scenario::Runner;
+use stickslip_bevy::{StickSlipRapier, StickSlipRapierPlugin};
+use stickslip_scenario_035::Runner;
 
 fn scenarios() -> Vec<PathBuf> {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../scenarios");
@@ -30,43 +36,58 @@ fn scenarios() -> Vec<PathBuf> {
 
 fn app() -> App {
     let mut app = App::new();
-    app.add_plugins((
-        MinimalPlugins,
-        StickSlipPlugins::default(),
-        StickSlipScenarioPlugin::default(),
-    ))
-    .insert_resource(TimeUpdateStrategy::FixedTimesteps(1));
+    app.add_plugins((MinimalPlugins, TransformPlugin))
+        .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
+            16,
+        )))
+        .add_plugins(RapierPhysicsPlugin::<NoUserData>::default())
+        .add_plugins((
+            StickSlipRapierPlugin::default(),
+            StickSlipScenarioPlugin::default(),
+        ));
+    app.update();
     app
+}
+
+fn counts(app: &mut App) -> (usize, usize) {
+    let mut q = app
+        .world_mut()
+        .query::<(&RapierRigidBodySet, &RapierContextColliders)>();
+    let (b, c) = q.single(app.world()).unwrap();
+    (b.bodies.len(), c.colliders.len())
 }
 
 #[test]
 fn every_shipped_scenario_ends_where_the_runner_ends() {
     for path in scenarios() {
         let scenario = Scenario::from_path(&path).unwrap();
-        let steps = (1.0 / scenario.world.dt).ceil() as u64;
+        let steps = ((1.0 / scenario.world.dt).ceil() as u64).min(2000);
 
         let mut runner = Runner::new(scenario.build().unwrap());
         runner.run(steps);
 
         let mut app = app();
         spawn_scenario(app.world_mut(), &scenario).unwrap();
-        app.update(); // no time step yet
+        let t0 = app.world().resource::<StickSlipRapier>().modifier.time();
         for _ in 0..steps {
             app.update();
         }
-        let w = app.world().resource::<StickSlipWorld>();
+        let t = app.world().resource::<StickSlipRapier>().modifier.time() - t0;
         assert_eq!(
-            w.friction.time().to_bits(),
+            t.to_bits(),
             runner.time().to_bits(),
             "{}: the same steps of the same length",
             path.display()
         );
-        let loaded = app.world().resource::<LoadedScenario>();
+        let loaded = app.world().resource::<LoadedScenario>().clone();
         let scene = runner.scene();
+        let mut q = app.world_mut().query::<&RapierRigidBodySet>();
+        let set = q.single(app.world()).unwrap();
         let (mut worst, mut identical) = (0.0f64, 0);
         for (b, s) in loaded.bodies.iter().zip(&scene.bodies) {
             assert_eq!(b.name, s.name);
-            let ours = &w.physics.bodies[w.body(b.entity).unwrap()];
+            let handle = set.entity2body()[&b.entity];
+            let ours = &set.bodies[handle];
             let theirs = &scene.world.bodies[s.handle];
             let (p, q) = (ours.translation(), theirs.translation());
             if p.to_array().map(f32::to_bits) == q.to_array().map(f32::to_bits)
@@ -86,7 +107,7 @@ fn every_shipped_scenario_ends_where_the_runner_ends() {
             worst = worst.max(err / tol);
             assert!(
                 err <= tol,
-                "{}: body {} at {p:?} in bevy, {q:?} in the runner",
+                "{}: body {} at {p:?} in bevy_rapier, {q:?} in the runner",
                 path.display(),
                 b.name,
             );
@@ -101,6 +122,51 @@ fn every_shipped_scenario_ends_where_the_runner_ends() {
 }
 
 #[test]
+fn the_viewers_framing_shows_every_moving_body_whole() {
+    let aspect = 16.0 / 9.0;
+    let projection = PerspectiveProjection {
+        aspect_ratio: aspect,
+        ..default()
+    };
+    let clip_from_view = projection.get_clip_from_view();
+    for path in scenarios() {
+        let scenario = Scenario::from_path(&path).unwrap();
+        let mut app = app();
+        spawn_scenario(app.world_mut(), &scenario).unwrap();
+        let loaded = app.world().resource::<LoadedScenario>();
+        let camera = loaded.framing(projection.fov, aspect);
+        let view_from_world = camera.to_matrix().inverse();
+        let (min, max) = loaded.region;
+        let (mut lo, mut hi) = (Vec2::splat(f32::MAX), Vec2::splat(f32::MIN));
+        for i in 0..8 {
+            let corner = Vec3::new(
+                if i & 1 == 0 { min.x } else { max.x },
+                if i & 2 == 0 { min.y } else { max.y },
+                if i & 4 == 0 { min.z } else { max.z },
+            );
+            let ndc = clip_from_view.project_point3(view_from_world.transform_point3(corner));
+            lo = lo.min(ndc.truncate());
+            hi = hi.max(ndc.truncate());
+        }
+        println!(
+            "{}: region {min:?}..{max:?} on screen x {:.2}..{:.2}, y {:.2}..{:.2}",
+            path.file_name().unwrap().to_string_lossy(),
+            lo.x,
+            hi.x,
+            lo.y,
+            hi.y
+        );
+        assert!(
+            lo.cmpge(Vec2::splat(-1.0)).all() && hi.cmple(Vec2::splat(1.0)).all(),
+            "{}: cut off",
+            path.display()
+        );
+        let span = (hi - lo).max_element();
+        assert!(span >= 2.0 / 3.0, "{}: only {span} of 2", path.display());
+    }
+}
+
+#[test]
 fn reloading_replaces_the_entities() {
     let scenario = Scenario::builtin();
     let mut app = app();
@@ -108,8 +174,7 @@ fn reloading_replaces_the_entities() {
     for _ in 0..3 {
         app.update();
     }
-    let w = app.world().resource::<StickSlipWorld>();
-    let first = (w.physics.bodies.len(), w.physics.colliders.len());
+    let first = counts(&mut app);
     let old = app.world().resource::<LoadedScenario>().bodies[0].entity;
     assert!(first.0 > 0 && first.1 > 0);
 
@@ -117,9 +182,7 @@ fn reloading_replaces_the_entities() {
     for _ in 0..3 {
         app.update();
     }
-    let w = app.world().resource::<StickSlipWorld>();
-    assert_eq!((w.physics.bodies.len(), w.physics.colliders.len()), first);
-    assert_eq!(w.counts(), first);
+    assert_eq!(counts(&mut app), first);
     assert!(
         app.world().get_entity(old).is_err(),
         "the old entities are gone"
@@ -136,5 +199,5 @@ fn an_invalid_scenario_is_an_error_and_spawns_nothing() {
     assert!(app.world().get_resource::<LoadedScenario>().is_none());
     app.update();
     app.update();
-    assert_eq!(app.world().resource::<StickSlipWorld>().counts(), (0, 0));
+    assert_eq!(counts(&mut app), (0, 0));
 }

@@ -1,25 +1,31 @@
-//! Shared setup of the headless tests (not a test itself).
+//! Shared setup of the headless bevy_rapier tests (not a test itself).
 #![allow(dead_code)]
 
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
-use stickslip_bevy::prelude::*;
+use bevy_rapier3d::prelude::*;
+use std::time::Duration;
+use stickslip_bevy::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin};
+use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
+use stickslip_rapier_035::FrictionMaterial;
 
-/// Physics rate of the tests (Hz).
-pub const HZ: f64 = 120.0;
-
-/// A headless app: `MinimalPlugins`, the stickslip plugins, one fixed step per update.
-pub fn app() -> App {
+/// A headless bevy_rapier app with stickslip, in `mode`, each update `frame` seconds of
+/// render time (what Variable and Interpolated step by).
+pub fn app(mode: TimestepMode, frame: f64) -> App {
     let mut app = App::new();
-    app.add_plugins((MinimalPlugins, StickSlipPlugins::default()))
-        .insert_resource(Time::<Fixed>::from_hz(HZ))
-        .insert_resource(TimeUpdateStrategy::FixedTimesteps(1));
-    app.update(); // the first update has no time step
+    app.add_plugins((MinimalPlugins, TransformPlugin))
+        .insert_resource(mode)
+        .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f64(
+            frame,
+        )))
+        .add_plugins(RapierPhysicsPlugin::<NoUserData>::default())
+        .add_plugins(StickSlipRapierPlugin::default());
+    app.update(); // contexts exist from here on
     app
 }
 
-/// Runs `n` fixed steps.
+/// Runs `n` updates.
 pub fn steps(app: &mut App, n: usize) {
     for _ in 0..n {
         app.update();
@@ -36,14 +42,17 @@ pub fn ep(c: f64, mu_ba: f64, mu_k: f64) -> FrictionMaterial {
 
 /// Gravity of magnitude g tilted so that the horizontal ground is an incline of slope `tan`
 /// (downhill is +x).
-pub fn incline(tan: f64) -> Gravity {
+pub fn incline(app: &mut App, tan: f64) {
     let theta = tan.atan();
-    let g = 9.81;
-    Gravity(Vec3::new(
-        (g * theta.sin()) as f32,
-        -(g * theta.cos()) as f32,
+    let g = Vec3::new(
+        (9.81 * theta.sin()) as f32,
+        -(9.81 * theta.cos()) as f32,
         0.0,
-    ))
+    );
+    let mut q = app.world_mut().query::<&mut RapierConfiguration>();
+    for mut c in q.iter_mut(app.world_mut()) {
+        c.gravity = g;
+    }
 }
 
 /// A fixed ground (top face at y = 0.1) with friction `law`.
@@ -52,32 +61,31 @@ pub fn ground(app: &mut App, law: FrictionMaterial) -> Entity {
         .spawn((
             RigidBody::Fixed,
             Collider::cuboid(50.0, 0.1, 5.0),
-            FrictionLaw::new(law),
+            Transform::default(),
+            StickSlipFriction(Some(law)),
         ))
         .id()
 }
 
-/// A 8 kg box (half extent 0.1 m) resting on the ground at x.
-pub fn part(app: &mut App, x: f32) -> Entity {
+/// An 8 kg box (half extent 0.1 m, rotation locked) resting on the ground at x, with the
+/// same law as the ground.
+pub fn part(app: &mut App, x: f32, law: FrictionMaterial) -> Entity {
     app.world_mut()
         .spawn((
             RigidBody::Dynamic,
             Collider::cuboid(0.1, 0.1, 0.1),
-            LockRotations,
+            ColliderMassProperties::Mass(8.0),
+            LockedAxes::ROTATION_LOCKED,
+            Velocity::zero(),
             Transform::from_xyz(x, 0.2, 0.0),
+            StickSlipFriction(Some(law)),
         ))
         .id()
 }
 
-/// Simulated time of the physics (s).
+/// Simulated time of the bracketed rapier steps (s): the modifier's clock.
 pub fn sim_time(app: &App) -> f64 {
-    app.world().resource::<StickSlipWorld>().friction.time()
-}
-
-/// Rapier bodies and colliders in the world.
-pub fn rapier_counts(app: &App) -> (usize, usize) {
-    let w = app.world().resource::<StickSlipWorld>();
-    (w.physics.bodies.len(), w.physics.colliders.len())
+    app.world().resource::<StickSlipRapier>().modifier.time()
 }
 
 /// Position and velocity of an entity along x.

@@ -8,7 +8,7 @@
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
-use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin};
+use stickslip_bevy::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin};
 
 #[derive(Component)]
 struct OneWay;

@@ -6,7 +6,7 @@
 
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
-use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin};
+use stickslip_bevy::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin};
 
 #[derive(Resource, Default)]
 struct Seen {

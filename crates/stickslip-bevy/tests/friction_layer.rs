@@ -8,7 +8,7 @@
 
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
-use stickslip_bevy_rapier::{
+use stickslip_bevy::{
     StickSlipContacts, StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin,
     StickSlipVibration, SurfaceVelocity,
 };
@@ -131,12 +131,9 @@ fn contacts_are_read_back_as_entities() {
 }
 
 #[derive(Resource, Default)]
-struct Changes(Vec<stickslip_bevy_rapier::RegimeChanged>);
+struct Changes(Vec<stickslip_bevy::RegimeChanged>);
 
-fn record(
-    mut events: MessageReader<stickslip_bevy_rapier::RegimeChanged>,
-    mut changes: ResMut<Changes>,
-) {
+fn record(mut events: MessageReader<stickslip_bevy::RegimeChanged>, mut changes: ResMut<Changes>) {
     changes.0.extend(events.read().copied());
 }
 

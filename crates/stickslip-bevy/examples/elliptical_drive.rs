@@ -12,18 +12,17 @@
 //! Keys: F flip both ellipses (phase shift ↔ −phase shift), Space pause, R reset.
 //!
 //! ```sh
-//! cargo run --release -p stickslip-bevy-rapier --features window --example elliptical_drive_rapier
-//! xvfb-run -a -s "-screen 0 1280x720x24" cargo run -p stickslip-bevy-rapier --features window \
-//!     --example elliptical_drive_rapier -- --screenshot drive.png --frames 90
+//! cargo run --release -p stickslip-bevy --features window --example elliptical_drive
+//! xvfb-run -a -s "-screen 0 1280x720x24" cargo run -p stickslip-bevy --features window \
+//!     --example elliptical_drive -- --screenshot drive.png --frames 90
 //! ```
 
-use bevy::ecs::schedule::ScheduleLabel;
 use bevy::prelude::*;
 use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured, save_to_disk};
 use bevy::time::TimeUpdateStrategy;
 use bevy_rapier3d::prelude::*;
 use std::time::Duration;
-use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapierPlugin, StickSlipVibration};
+use stickslip_bevy::{StickSlipFriction, StickSlipRapierPlugin, StickSlipVibration};
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 use stickslip_rapier_035::scenes::VibratingPlate;
@@ -86,7 +85,7 @@ fn main() -> AppExit {
             ("--screenshot", Some(p)) => shot = Some(p),
             ("--frames", Some(n)) if n.parse::<u32>().is_ok() => frames = n.parse().unwrap_or(90),
             _ => {
-                eprintln!("usage: elliptical_drive_rapier [--screenshot PATH] [--frames N]");
+                eprintln!("usage: elliptical_drive [--screenshot PATH] [--frames N]");
                 return AppExit::error();
             }
         }
