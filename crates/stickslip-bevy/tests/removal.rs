@@ -1,0 +1,108 @@
+//! Removing stickslip's components (or despawning their entities) leaves no stickslip state
+//! behind. Invariants: removing `StickSlipFriction` from both sides of a resting contact
+//! detaches both colliders (no material, no contact state) and their pair goes back to
+//! rapier's own friction; removing `StickSlipVibration` drops the collider's vibration source,
+//! and so does despawning a vibrating entity (its rapier handle may be reused by the next
+//! collider, which must not inherit the source).
+
+mod common;
+use bevy::prelude::*;
+use bevy_rapier3d::prelude::*;
+use common::*;
+use stickslip_bevy::{StickSlipFriction, StickSlipRapier, StickSlipVibration};
+use stickslip_core::waveform::Waveform;
+use stickslip_rapier_035::{Amplitude, VibrationDirection, VibrationMode, VibrationSource};
+
+const DT: f64 = 1.0 / 60.0;
+
+fn fixed() -> TimestepMode {
+    TimestepMode::Fixed {
+        dt: DT as f32,
+        substeps: 1,
+    }
+}
+
+fn shaker() -> StickSlipVibration {
+    StickSlipVibration(
+        VibrationSource::new(
+            VibrationDirection::Normal,
+            Amplitude::Ratio(0.5),
+            1000.0,
+            Waveform::Sine,
+            0.0,
+            VibrationMode::Averaged,
+        )
+        .unwrap(),
+    )
+}
+
+fn handle(app: &App, e: Entity) -> bevy_rapier3d::rapier::geometry::ColliderHandle {
+    app.world().get::<RapierColliderHandle>(e).unwrap().0
+}
+
+#[test]
+fn removing_the_friction_component_detaches_both_sides() {
+    let mut app = app(fixed(), DT);
+    let law = ep(1e5, 0.5, 0.5);
+    let g = ground(&mut app, law.clone());
+    let b = part(&mut app, 0.0, law);
+    steps(&mut app, 10);
+    {
+        let mut state = app.world_mut().resource_mut::<StickSlipRapier>();
+        assert!(state.is_attached(g) && state.is_attached(b));
+        assert_eq!(state.modifier.active_contacts(), 1);
+    }
+    let (hg, hb) = (handle(&app, g), handle(&app, b));
+    for e in [g, b] {
+        app.world_mut().entity_mut(e).remove::<StickSlipFriction>();
+    }
+    steps(&mut app, 3);
+    let mut state = app.world_mut().resource_mut::<StickSlipRapier>();
+    assert!(!state.is_attached(g) && !state.is_attached(b));
+    assert_eq!(state.attached_count(), 0);
+    assert!(!state.modifier.is_attached(hg) && !state.modifier.is_attached(hb));
+    assert!(state.modifier.material(hg).is_none() && state.modifier.material(hb).is_none());
+    assert_eq!(
+        state.modifier.active_contacts(),
+        0,
+        "contact state left behind"
+    );
+}
+
+#[test]
+fn removing_or_despawning_a_vibration_drops_its_source() {
+    let mut app = app(fixed(), DT);
+    let law = ep(1e5, 0.5, 0.5);
+    let g = ground(&mut app, law.clone());
+    app.world_mut().entity_mut(g).insert(shaker());
+    // A second vibrating collider, not under stickslip's friction.
+    let plate = app
+        .world_mut()
+        .spawn((
+            RigidBody::Fixed,
+            Collider::cuboid(1.0, 0.1, 1.0),
+            Transform::from_xyz(0.0, -5.0, 0.0),
+            shaker(),
+        ))
+        .id();
+    steps(&mut app, 3);
+    let (hg, hp) = (handle(&app, g), handle(&app, plate));
+    {
+        let state = app.world().resource::<StickSlipRapier>();
+        assert!(state.modifier.vibration(hg).is_some());
+        assert!(state.modifier.vibration(hp).is_some());
+    }
+    app.world_mut().entity_mut(g).remove::<StickSlipVibration>();
+    app.world_mut().despawn(plate);
+    steps(&mut app, 3);
+    let state = app.world().resource::<StickSlipRapier>();
+    assert!(
+        state.modifier.vibration(hg).is_none(),
+        "removed source kept"
+    );
+    assert!(
+        state.modifier.vibration(hp).is_none(),
+        "despawned source kept"
+    );
+    assert!(state.is_attached(g), "the friction stays attached");
+}
