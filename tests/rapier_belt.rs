@@ -36,6 +36,8 @@ fn slip_marks(law: Law, seconds: f64) -> Vec<f64> {
         belt: scene.ground,
         velocity: Vector::new(V_B as f32, 0.0, 0.0),
     };
+    // The user flags the belt for their hook, as they would without stickslip.
+    scene.world.colliders[scene.ground].set_active_hooks(ActiveHooks::MODIFY_SOLVER_CONTACTS);
     let mut modifier = StickSlip::with_hooks(FrictionMaterial::new(law), conveyor);
     modifier.attach(&mut scene.world.colliders, scene.ground, None);
     modifier.attach(&mut scene.world.colliders, scene.box_collider, None);

@@ -125,7 +125,12 @@ fn a_sliding_box_reports_its_velocity_as_slip() {
 #[test]
 fn a_box_carried_by_a_conveyor_reports_no_slip_against_the_belt() {
     let mut world = PhysicsWorld::default();
-    let belt = world.insert_collider(ColliderBuilder::cuboid(50.0, GROUND_TOP, 50.0), None);
+    // The user flags the belt for their hook, as they would without stickslip.
+    let belt = world.insert_collider(
+        ColliderBuilder::cuboid(50.0, GROUND_TOP, 50.0)
+            .active_hooks(ActiveHooks::MODIFY_SOLVER_CONTACTS),
+        None,
+    );
     let speed = Vector::new(0.5, 0.0, 0.0);
     let law = Law::elasto_plastic(1e4, 0.5, 0.55, Curve::constant(0.55).unwrap()).unwrap();
     let conveyor = stickslip::rapier::scenes::Conveyor {

@@ -107,6 +107,8 @@ fn modifier(kind: Kind, mode: VibrationMode, s: &mut Scene) -> Modifier {
         belt: s.belt,
         velocity: Vector::new(0.3, 0.0, 0.0),
     };
+    // The user flags the belt for their hook, as they would without stickslip.
+    s.world.colliders[s.belt].set_active_hooks(ActiveHooks::MODIFY_SOLVER_CONTACTS);
     let mut m = StickSlip::with_hooks(FrictionMaterial::new(law(kind)), conveyor)
         .with_read_back(stickslip::rapier::ReadBack::Contacts);
     m.attach(&mut s.world.colliders, s.ground, None);
@@ -681,6 +683,10 @@ fn hundreds_of_contacts_resume_bit_identically() {
     };
     let (mut world, ground, floor, bodies) = build();
     let threads = ThreadsSeen::default();
+    // The user's hook runs where the user flags it.
+    for h in [ground, floor] {
+        world.colliders[h].set_active_hooks(ActiveHooks::MODIFY_SOLVER_CONTACTS);
+    }
     let mut m = StickSlip::with_hooks(FrictionMaterial::new(law(Kind::Ep)), threads.clone())
         .with_read_back(stickslip::rapier::ReadBack::Contacts);
     m.attach(&mut world.colliders, ground, None);

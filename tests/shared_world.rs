@@ -6,7 +6,10 @@
 //! collider rapier lists first, the pair's law is the same bit for bit and the trajectories
 //! differ no more than plain rapier's own do (its friction basis follows the pair's normal,
 //! which flips with the order); a per-pair material wins; an unattached collider brings its
-//! rapier friction. A panicking wrapped hook leaves no lock held: the next steps
+//! rapier friction. The user's wrapped hook is called on exactly the pairs rapier calls it
+//! for without stickslip (a pair whose only hook flag is stickslip's is not theirs; one they
+//! flag and stickslip also owns is theirs and the law's), and detaching turns off only
+//! stickslip's flag. A panicking wrapped hook leaves no lock held: the next steps
 //! finish (bounded by a join timeout, not by the test harness) and the world is consistent.
 //! Composite shapes keep one record per manifold. The silent cases speak: reports and totals
 //! are an error when read-back is off, a hook call without `begin_step` and a non-Simplified
@@ -152,6 +155,87 @@ fn pairs_stickslip_does_not_own_are_the_users_bit_for_bit() {
         1,
         "only the attached pair has a record"
     );
+}
+
+/// The user's hook that only records which pairs rapier called it for.
+#[derive(Default)]
+struct Recorder(Mutex<std::collections::HashSet<(ColliderHandle, ColliderHandle)>>);
+
+impl PhysicsHooks for Recorder {
+    fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
+        let (a, b) = (ctx.collider1, ctx.collider2);
+        let pair = if a.0.into_raw_parts() < b.0.into_raw_parts() {
+            (a, b)
+        } else {
+            (b, a)
+        };
+        self.0.lock().unwrap().insert(pair);
+    }
+}
+
+#[test]
+fn the_users_hook_sees_the_pairs_it_sees_without_stickslip() {
+    // Three grounds, a box on each: one attached without a user flag (stickslip's alone), one
+    // the user flags (their hook's alone), one both (the user's hook and the law).
+    let build = || {
+        let mut world = tilted_world(0.3);
+        let flag = ActiveHooks::MODIFY_SOLVER_CONTACTS;
+        let ground =
+            |x: f32| ColliderBuilder::cuboid(2.0, 0.1, 2.0).translation(Vector::new(x, -0.1, 0.0));
+        let stickslips = world.insert_collider(ground(-10.0), None);
+        let users = world.insert_collider(ground(0.0).active_hooks(flag), None);
+        let both = world.insert_collider(ground(10.0).active_hooks(flag), None);
+        let mut boxes = Vec::new();
+        for x in [-10.0, 0.0, 10.0] {
+            let (b, c) = cube(Vector::new(x, 0.1, 0.0));
+            boxes.push(world.insert(b, c).1);
+        }
+        (world, [stickslips, users, both], boxes)
+    };
+    let steps = 30;
+    let (mut world, _, _) = build();
+    let alone = Recorder::default();
+    for _ in 0..steps {
+        world.step_with_events(&alone, &());
+    }
+    let alone = alone.0.into_inner().unwrap();
+    let (mut world, [stickslips, users, both], boxes) = build();
+    let mut m = StickSlip::with_hooks(FrictionMaterial::new(ep(0.5, 0.5)), Recorder::default());
+    for h in [stickslips, both, boxes[0]] {
+        m.attach(&mut world.colliders, h, None);
+    }
+    // Attaching again (a new material) does not make stickslip's flag the user's.
+    m.attach(&mut world.colliders, stickslips, None);
+    for _ in 0..steps {
+        m.step(&mut world);
+    }
+    let with = std::mem::take(&mut *m.inner().0.lock().unwrap());
+    let pair = |a: ColliderHandle, b: ColliderHandle| {
+        if a.0.into_raw_parts() < b.0.into_raw_parts() {
+            (a, b)
+        } else {
+            (b, a)
+        }
+    };
+    assert!(alone.contains(&pair(users, boxes[1])), "{alone:?}");
+    assert!(alone.contains(&pair(both, boxes[2])), "{alone:?}");
+    assert_eq!(
+        with, alone,
+        "the user's hook saw other pairs with stickslip attached"
+    );
+    assert!(!with.contains(&pair(stickslips, boxes[0])));
+    // Both attached boxes have a record: the law acts where the user's hook also does.
+    assert_eq!(m.active_contacts(), 2);
+    // Detaching turns off only stickslip's flag.
+    m.detach(&mut world.colliders, stickslips);
+    m.detach(&mut world.colliders, both);
+    let flagged = |h: ColliderHandle| {
+        world.colliders[h]
+            .active_hooks()
+            .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
+    };
+    assert!(!flagged(stickslips));
+    assert!(flagged(both) && flagged(users));
 }
 
 /// One side of the incline pair.
@@ -365,7 +449,9 @@ impl PhysicsHooks for Panicky {
 fn a_panicking_wrapped_hook_leaves_no_lock_held() {
     let mut world = tilted_world(0.2);
     let ground = world.insert_collider(
-        ColliderBuilder::cuboid(20.0, 0.1, 20.0).translation(Vector::Y * -0.1),
+        ColliderBuilder::cuboid(20.0, 0.1, 20.0)
+            .translation(Vector::Y * -0.1)
+            .active_hooks(ActiveHooks::MODIFY_SOLVER_CONTACTS),
         None,
     );
     let mut m = StickSlip::with_hooks(

@@ -1,20 +1,36 @@
-//! The rapier hooks of a bracketed step: the app's own `BevyPhysicsHooks` first on every
-//! pair, then the surface velocities, then stickslip on the pairs it was given.
+//! The rapier hooks of a bracketed step: the app's own `BevyPhysicsHooks` first on the pairs
+//! the app flagged, then the surface velocities, then stickslip on the pairs it was given.
 
 use bevy::prelude::*;
 use bevy_rapier3d::pipeline::{ContactModificationContextView, PairFilterContextView};
 use bevy_rapier3d::prelude::BevyPhysicsHooks;
 use bevy_rapier3d::rapier::geometry::{ColliderHandle, SolverFlags};
+use bevy_rapier3d::rapier::pipeline::ActiveHooks;
 use bevy_rapier3d::rapier::pipeline::{
     ContactModificationContext, PairFilterContext, PhysicsHooks,
 };
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use stickslip_rapier_035::StickSlip;
 
 /// The app's hooks as rapier hooks, then the surface velocities.
 pub(crate) struct UserHooks<'a, T> {
     pub(crate) user: &'a T,
     pub(crate) surfaces: &'a HashMap<ColliderHandle, Vec3>,
+    /// The colliders whose hook flag is stickslip's, not the app's.
+    pub(crate) hook_flags: &'a HashSet<ColliderHandle>,
+}
+
+impl<T> UserHooks<'_, T> {
+    /// Whether bevy_rapier would call the app's hook on this pair without stickslip.
+    fn apps_pair(&self, context: &ContactModificationContext) -> bool {
+        [context.collider1, context.collider2].into_iter().any(|h| {
+            !self.hook_flags.contains(&h)
+                && context.colliders.get(h).is_some_and(|c| {
+                    c.active_hooks()
+                        .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
+                })
+        })
+    }
 }
 
 impl<T: BevyPhysicsHooks> PhysicsHooks for UserHooks<'_, T> {
@@ -30,8 +46,10 @@ impl<T: BevyPhysicsHooks> PhysicsHooks for UserHooks<'_, T> {
 
     fn modify_solver_contacts(&self, context: &mut ContactModificationContext) {
         let (c1, c2) = (context.collider1, context.collider2);
-        self.user
-            .modify_solver_contacts(ContactModificationContextView { raw: &mut *context });
+        if self.apps_pair(context) {
+            self.user
+                .modify_solver_contacts(ContactModificationContextView { raw: &mut *context });
+        }
         if self.surfaces.is_empty() {
             return;
         }

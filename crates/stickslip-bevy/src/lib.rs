@@ -35,7 +35,9 @@
 //!
 //! The app's own `BevyPhysicsHooks` (a one-way platform, …) keep working: name them in both
 //! plugins, `RapierPhysicsPlugin::<MyHooks>` and
-//! `StickSlipRapierPlugin::default().with_hooks::<MyHooks>()`; they run first on every pair.
+//! `StickSlipRapierPlugin::default().with_hooks::<MyHooks>()`; they run first, on exactly the
+//! pairs bevy_rapier would call them for without stickslip (the hook flag stickslip turns on
+//! in rapier is its own; the app's `ActiveHooks` component stays the app's).
 //! stickslip acts on the default rapier context; other contexts step as in bevy_rapier.
 
 #![warn(missing_docs)]
@@ -138,10 +140,22 @@ where
         .add_message::<RegimeChanged>()
         .add_systems(
             self.schedule,
-            (sync::attach, sync::sync_vibrations, sync::sync_surfaces)
+            (
+                sync::removals,
+                sync::attach,
+                sync::sync_vibrations,
+                sync::sync_surfaces,
+                sync::follow_app_hooks,
+            )
                 .chain()
                 .after(PhysicsSet::SyncBackend)
                 .before(PhysicsSet::StepSimulation),
+        )
+        // Where bevy_rapier reads its own removals (none is missed in any schedule), before
+        // it removes the colliders.
+        .add_systems(
+            PostUpdate,
+            sync::removals.before(bevy_rapier3d::plugin::systems::sync_removals),
         );
 
         // bevy_rapier's step system is replaced at startup, when every plugin is built

@@ -3,7 +3,7 @@
 
 use bevy::prelude::*;
 use bevy_rapier3d::rapier::geometry::{ColliderHandle, ColliderSet};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use stickslip_core::law::Regime;
 use stickslip_rapier_035::{ContactReport, StickSlip};
 
@@ -19,6 +19,10 @@ pub struct StickSlipRapier {
     pub(crate) vibrating: HashMap<Entity, ColliderHandle>,
     /// Surface velocities by collider.
     pub(crate) surfaces: HashMap<ColliderHandle, Vec3>,
+    pub(crate) surface_entities: HashMap<Entity, ColliderHandle>,
+    /// The colliders whose `MODIFY_SOLVER_CONTACTS` flag is stickslip's, not the app's (the
+    /// app's hooks do not see their pairs unless the other collider is the app's).
+    pub(crate) hook_flags: HashSet<ColliderHandle>,
 }
 
 impl StickSlipRapier {
@@ -29,6 +33,8 @@ impl StickSlipRapier {
             attached: HashMap::new(),
             vibrating: HashMap::new(),
             surfaces: HashMap::new(),
+            surface_entities: HashMap::new(),
+            hook_flags: HashSet::new(),
         }
     }
 

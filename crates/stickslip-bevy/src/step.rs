@@ -14,6 +14,7 @@ use bevy_rapier3d::plugin::context::{
     RapierRigidBodySet, SimulationToRenderTime,
 };
 use bevy_rapier3d::prelude::*;
+use std::collections::{HashMap, HashSet};
 
 /// The rapier steps of one frame, exactly as bevy_rapier 0.36's `step_simulation` runs them.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -124,6 +125,7 @@ pub(crate) fn step_simulation_bracketed<H>(
     let user = &*user;
     let state = &mut *state;
     let out = &mut out;
+    let (no_surfaces, no_flags) = (HashMap::new(), HashSet::new());
     for (mut sim, mut colliders, mut joints, mut bodies, config, mut to_render, is_default) in
         &mut contexts
     {
@@ -153,11 +155,18 @@ pub(crate) fn step_simulation_bracketed<H>(
                     params.dt = steps.step_dt;
                     state.modifier.begin_step(&params);
                 }
+                // Surfaces and stickslip's hook flags are the default context's handles.
+                let (surfaces, hook_flags) = if is_default {
+                    (&state.surfaces, &state.hook_flags)
+                } else {
+                    (&no_surfaces, &no_flags)
+                };
                 let hooks = StepHooks {
                     stickslip: bracket.then_some(&state.modifier),
                     user: UserHooks {
                         user,
-                        surfaces: &state.surfaces,
+                        surfaces,
+                        hook_flags,
                     },
                 };
                 // One rapier step: bevy_rapier's Fixed mode with one substep of this dt.

@@ -1,32 +1,48 @@
-//! The app's stickslip components onto the modifier, each frame before the step: colliders
-//! attached and detached, vibration sources, surface velocities (and the `ActiveHooks` flag
-//! bevy_rapier writes from the collider's component).
+//! The app's stickslip components onto the modifier: colliders attached, vibration sources
+//! and surface velocities each frame before the step; removals (and despawns) in `PostUpdate`
+//! before bevy_rapier removes the colliders, so that none is missed whatever schedule the
+//! physics runs in.
+//!
+//! The rapier hook flag `MODIFY_SOLVER_CONTACTS` on a stickslip collider is stickslip's unless
+//! the app's own `ActiveHooks` component carries it: the component stays the app's (stickslip
+//! never writes it), stickslip turns the flag on in rapier's collider, and again after
+//! bevy_rapier rewrote the flags from a changed component. The app's hooks run only on pairs
+//! with a collider whose flag is the app's ([`crate::hooks::UserHooks`]).
 
 use crate::components::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
 use crate::state::StickSlipRapier;
 use bevy::prelude::*;
 use bevy_rapier3d::plugin::context::{DefaultRapierContext, RapierContextColliders};
 use bevy_rapier3d::prelude::*;
+use bevy_rapier3d::rapier::geometry::{ColliderHandle, ColliderSet};
+use bevy_rapier3d::rapier::pipeline::ActiveHooks as RapierHooks;
 
 /// Whether a collider lives in the default context (the one stickslip brackets).
 fn in_default(link: Option<&RapierContextEntityLink>, default: Entity) -> bool {
     link.is_none_or(|l| l.0 == default)
 }
 
-/// Turns on the hook flag bevy_rapier writes into the collider, keeping the app's flags.
-fn add_hook_flag(commands: &mut Commands, entity: Entity, hooks: Option<&ActiveHooks>) {
-    let flags = hooks.copied().unwrap_or(ActiveHooks::empty());
-    if !flags.contains(ActiveHooks::MODIFY_SOLVER_CONTACTS) {
-        commands
-            .entity(entity)
-            .insert(flags | ActiveHooks::MODIFY_SOLVER_CONTACTS);
+/// Turns the hook flag on in rapier's collider; it is stickslip's unless the app's component
+/// has it.
+fn claim_hook_flag(
+    state: &mut StickSlipRapier,
+    colliders: &mut ColliderSet,
+    handle: ColliderHandle,
+    app: Option<&ActiveHooks>,
+) {
+    if let Some(c) = colliders.get_mut(handle) {
+        c.set_active_hooks(c.active_hooks() | RapierHooks::MODIFY_SOLVER_CONTACTS);
+    }
+    if app.is_some_and(|f| f.contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)) {
+        state.hook_flags.remove(&handle);
+    } else {
+        state.hook_flags.insert(handle);
     }
 }
 
-/// Attaches marked colliders once bevy_rapier created them; detaches removed ones.
+/// Attaches marked colliders once bevy_rapier made them (and again with a changed material).
 #[allow(clippy::type_complexity)]
 pub(crate) fn attach(
-    mut commands: Commands,
     mut state: ResMut<StickSlipRapier>,
     marked: Query<
         (
@@ -38,70 +54,200 @@ pub(crate) fn attach(
         ),
         Or<(Added<RapierColliderHandle>, Changed<StickSlipFriction>)>,
     >,
-    mut removed: RemovedComponents<StickSlipFriction>,
     mut context: Query<(Entity, &mut RapierContextColliders), With<DefaultRapierContext>>,
 ) {
     let Ok((default, mut colliders)) = context.single_mut() else {
         return;
     };
     let state = &mut *state;
-    for entity in removed.read() {
-        if let Some(h) = state.attached.remove(&entity) {
-            state.modifier.detach(&mut colliders.colliders, h);
-        }
-    }
     if !state.active {
         return;
     }
+    let colliders = &mut colliders.bypass_change_detection().colliders;
     for (entity, friction, handle, hooks, link) in &marked {
         if !in_default(link, default) {
             continue;
         }
+        // A new collider of the same entity (its `Collider` replaced): the old one goes.
+        if let Some(&old) = state.attached.get(&entity)
+            && old != handle.0
+        {
+            state.attached.remove(&entity);
+            state.modifier.detach(colliders, old);
+            release(state, colliders, entity, old);
+        }
+        // The flag first: the modifier then finds it on and leaves it to us.
+        claim_hook_flag(state, colliders, handle.0, hooks);
         state
             .modifier
-            .attach(&mut colliders.colliders, handle.0, friction.0.clone());
+            .attach(colliders, handle.0, friction.0.clone());
         state.attached.insert(entity, handle.0);
-        add_hook_flag(&mut commands, entity, hooks);
     }
 }
 
-/// Vibration sources onto the colliders' contacts (and off again, also on despawn).
+/// Vibration sources onto the colliders' contacts.
 #[allow(clippy::type_complexity)]
 pub(crate) fn sync_vibrations(
     mut state: ResMut<StickSlipRapier>,
     changed: Query<
-        (Entity, &StickSlipVibration, &RapierColliderHandle),
+        (
+            Entity,
+            &StickSlipVibration,
+            &RapierColliderHandle,
+            Option<&RapierContextEntityLink>,
+        ),
         Or<(Changed<StickSlipVibration>, Added<RapierColliderHandle>)>,
     >,
-    mut removed: RemovedComponents<StickSlipVibration>,
+    context: Query<Entity, With<DefaultRapierContext>>,
 ) {
-    let state = &mut *state;
-    for entity in removed.read() {
-        if let Some(h) = state.vibrating.remove(&entity) {
-            state.modifier.remove_vibration(h);
+    let Ok(default) = context.single() else {
+        return;
+    };
+    for (entity, v, h, link) in &changed {
+        if in_default(link, default) {
+            state.modifier.set_vibration(h.0, v.0.clone());
+            state.vibrating.insert(entity, h.0);
         }
-    }
-    for (entity, v, h) in &changed {
-        state.modifier.set_vibration(h.0, v.0.clone());
-        state.vibrating.insert(entity, h.0);
     }
 }
 
 /// Surface velocities for the hooks (and the hook flag on their colliders).
 #[allow(clippy::type_complexity)]
 pub(crate) fn sync_surfaces(
-    mut commands: Commands,
     mut state: ResMut<StickSlipRapier>,
-    surfaces: Query<(
-        Entity,
-        &SurfaceVelocity,
-        &RapierColliderHandle,
-        Option<&ActiveHooks>,
-    )>,
+    changed: Query<
+        (
+            Entity,
+            &SurfaceVelocity,
+            &RapierColliderHandle,
+            Option<&ActiveHooks>,
+            Option<&RapierContextEntityLink>,
+        ),
+        Or<(Changed<SurfaceVelocity>, Added<RapierColliderHandle>)>,
+    >,
+    mut context: Query<(Entity, &mut RapierContextColliders), With<DefaultRapierContext>>,
 ) {
-    state.surfaces.clear();
-    for (entity, v, h, hooks) in &surfaces {
-        state.surfaces.insert(h.0, v.0);
-        add_hook_flag(&mut commands, entity, hooks);
+    let Ok((default, mut colliders)) = context.single_mut() else {
+        return;
+    };
+    let state = &mut *state;
+    // Without the bracketed step (see the startup error) bevy_rapier's own step knows no
+    // surfaces.
+    if !state.active {
+        return;
+    }
+    let colliders = &mut colliders.bypass_change_detection().colliders;
+    for (entity, v, h, hooks, link) in &changed {
+        if in_default(link, default) {
+            claim_hook_flag(state, colliders, h.0, hooks);
+            state.surfaces.insert(h.0, v.0);
+            state.surface_entities.insert(entity, h.0);
+        }
+    }
+}
+
+/// After bevy_rapier wrote a changed `ActiveHooks` component into rapier's collider: the flag
+/// back on for stickslip's colliders, and whose it is now.
+#[allow(clippy::type_complexity)]
+pub(crate) fn follow_app_hooks(
+    mut state: ResMut<StickSlipRapier>,
+    changed: Query<(Entity, &ActiveHooks, &RapierColliderHandle), Changed<ActiveHooks>>,
+    mut context: Query<&mut RapierContextColliders, With<DefaultRapierContext>>,
+) {
+    let Ok(mut colliders) = context.single_mut() else {
+        return;
+    };
+    let state = &mut *state;
+    let colliders = &mut colliders.bypass_change_detection().colliders;
+    for (entity, hooks, h) in &changed {
+        if state.attached.get(&entity) == Some(&h.0)
+            || state.surface_entities.get(&entity) == Some(&h.0)
+        {
+            claim_hook_flag(state, colliders, h.0, Some(hooks));
+        }
+    }
+}
+
+/// Removed components and despawned entities: at the head of the physics chain (before a
+/// collider made this frame could reuse a removed one's index) and in `PostUpdate` before
+/// bevy_rapier removes the colliders (bevy forgets removals after two frames; the physics may
+/// not run in between). Each runs with its own reader; the state is keyed by entity, so the
+/// second sight of a removal finds nothing left to do. An entity that has the component again
+/// on the same collider (removed and inserted again) stays.
+#[allow(clippy::type_complexity)]
+pub(crate) fn removals(
+    mut state: ResMut<StickSlipRapier>,
+    mut friction: RemovedComponents<StickSlipFriction>,
+    mut vibration: RemovedComponents<StickSlipVibration>,
+    mut surface: RemovedComponents<SurfaceVelocity>,
+    mut collider: RemovedComponents<Collider>,
+    present: Query<(
+        Option<&RapierColliderHandle>,
+        Has<StickSlipFriction>,
+        Has<StickSlipVibration>,
+        Has<SurfaceVelocity>,
+    )>,
+    mut context: Query<&mut RapierContextColliders, With<DefaultRapierContext>>,
+) {
+    let state = &mut *state;
+    let mut scratch = ColliderSet::new();
+    let mut context = context.single_mut().ok();
+    let colliders = match context.as_mut() {
+        Some(c) => &mut c.bypass_change_detection().colliders,
+        // No default context any more: only the bookkeeping goes.
+        None => &mut scratch,
+    };
+    // Whether `entity` still has the component (per `which`) on collider `h`.
+    let kept = |entity: Entity, h: ColliderHandle, which: usize| {
+        present
+            .get(entity)
+            .is_ok_and(|(handle, f, v, s)| handle.is_some_and(|c| c.0 == h) && [f, v, s][which])
+    };
+    let collider: Vec<Entity> = collider.read().collect();
+    let removed: Vec<Entity> = friction.read().chain(collider.iter().copied()).collect();
+    for entity in removed {
+        if let Some(&h) = state.attached.get(&entity)
+            && !kept(entity, h, 0)
+        {
+            state.attached.remove(&entity);
+            state.modifier.detach(colliders, h);
+            release(state, colliders, entity, h);
+        }
+    }
+    let removed: Vec<Entity> = vibration.read().chain(collider.iter().copied()).collect();
+    for entity in removed {
+        if let Some(&h) = state.vibrating.get(&entity)
+            && !kept(entity, h, 1)
+        {
+            state.vibrating.remove(&entity);
+            state.modifier.remove_vibration(h);
+        }
+    }
+    let removed: Vec<Entity> = surface.read().chain(collider.iter().copied()).collect();
+    for entity in removed {
+        if let Some(&h) = state.surface_entities.get(&entity)
+            && !kept(entity, h, 2)
+        {
+            state.surface_entities.remove(&entity);
+            state.surfaces.remove(&h);
+            release(state, colliders, entity, h);
+        }
+    }
+}
+
+/// Turns stickslip's hook flag off once `entity` (collider `h`) needs it no more.
+fn release(
+    state: &mut StickSlipRapier,
+    colliders: &mut ColliderSet,
+    entity: Entity,
+    h: ColliderHandle,
+) {
+    if state.attached.contains_key(&entity) || state.surface_entities.contains_key(&entity) {
+        return;
+    }
+    if state.hook_flags.remove(&h)
+        && let Some(c) = colliders.get_mut(h)
+    {
+        c.set_active_hooks(c.active_hooks() - RapierHooks::MODIFY_SOLVER_CONTACTS);
     }
 }

@@ -3,7 +3,10 @@
 //! detaches both colliders (no material, no contact state) and their pair goes back to
 //! rapier's own friction; removing `StickSlipVibration` drops the collider's vibration source,
 //! and so does despawning a vibrating entity (its rapier handle may be reused by the next
-//! collider, which must not inherit the source).
+//! collider, which must not inherit the source). With the physics in `FixedUpdate` at 60 Hz
+//! and frames of 1 ms (a fixed tick every ~17 frames), a removal made between two ticks is
+//! still seen: bevy forgets removals after two frames, so stickslip reads them in
+//! `PostUpdate`, beside bevy_rapier's own.
 
 mod common;
 use bevy::prelude::*;
@@ -105,4 +108,50 @@ fn removing_or_despawning_a_vibration_drops_its_source() {
         "despawned source kept"
     );
     assert!(state.is_attached(g), "the friction stays attached");
+}
+
+#[test]
+fn removals_between_fixed_ticks_are_not_missed() {
+    use bevy::time::TimeUpdateStrategy;
+    use std::time::Duration;
+    let mut app = App::new();
+    app.add_plugins((MinimalPlugins, TransformPlugin))
+        .insert_resource(Time::<Fixed>::from_hz(60.0))
+        .insert_resource(fixed())
+        .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(1)))
+        .add_plugins(RapierPhysicsPlugin::<NoUserData>::default().in_fixed_schedule())
+        .add_plugins(stickslip_bevy::StickSlipRapierPlugin::default().in_fixed_schedule());
+    app.update();
+    let law = ep(1e5, 0.5, 0.5);
+    let g = ground(&mut app, law.clone());
+    let b = part(&mut app, 0.0, law);
+    steps(&mut app, 300);
+    let clock = |app: &App| app.world().resource::<StickSlipRapier>().modifier.time();
+    // Remove right after a fixed tick: the next one is ~17 frames away.
+    let t = clock(&app);
+    while clock(&app) == t {
+        app.update();
+    }
+    {
+        let state = app.world_mut().resource_mut::<StickSlipRapier>();
+        assert!(state.is_attached(g) && state.is_attached(b));
+    }
+    let hb = handle(&app, b);
+    for e in [g, b] {
+        app.world_mut().entity_mut(e).remove::<StickSlipFriction>();
+    }
+    steps(&mut app, 60);
+    let mut state = app.world_mut().resource_mut::<StickSlipRapier>();
+    assert!(clock_moved(t, state.modifier.time()), "no fixed tick ran");
+    assert_eq!(state.attached_count(), 0, "a removal was missed");
+    assert!(!state.modifier.is_attached(hb));
+    assert_eq!(
+        state.modifier.active_contacts(),
+        0,
+        "contact state left behind"
+    );
+}
+
+fn clock_moved(before: f64, now: f64) -> bool {
+    now > before + 2.0 * DT - 1e-9
 }

@@ -63,9 +63,8 @@ impl<T> ColliderMap<T> {
 }
 
 /// A set of colliders as one bit per arena index (the pile of 10 000 attached boxes costs
-/// 1.25 kB, not 80). Generations are not kept: [`ColliderBits::insert`] and
-/// [`ColliderBits::remove`] are given the live handle, and a bit left by a removed collider is
-/// cleared when a collider reusing its index is attached (see `StickSlip::attach`).
+/// 1.25 kB, not 80). Generations are not kept: callers give the live handle, and a collider is
+/// detached before it is removed (or its bits apply to the next collider reusing its index).
 #[derive(Debug, Clone, Default)]
 pub(crate) struct ColliderBits {
     words: Vec<u64>,

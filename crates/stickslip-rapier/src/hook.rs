@@ -61,6 +61,20 @@ fn inv_mass(bodies: &RigidBodySet, h: Option<RigidBodyHandle>) -> f64 {
         })
 }
 
+/// The wrapped hooks, called only on the user's pairs (`theirs`).
+struct UsersPairsOnly<'a, I: ?Sized> {
+    hooks: &'a I,
+    theirs: bool,
+}
+
+impl<I: PhysicsHooks + ?Sized> UsersPairsOnly<'_, I> {
+    fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
+        if self.theirs {
+            self.hooks.modify_solver_contacts(ctx);
+        }
+    }
+}
+
 impl<H: PhysicsHooks> PhysicsHooks for StickSlip<H> {
     fn filter_contact_pair(&self, context: &PairFilterContext) -> Option<SolverFlags> {
         self.inner.filter_contact_pair(context)
@@ -76,15 +90,34 @@ impl<H: PhysicsHooks> PhysicsHooks for StickSlip<H> {
 }
 
 impl<H> StickSlip<H> {
+    /// Whether rapier would call the user's hook on this pair without stickslip: one of its
+    /// colliders carries a `MODIFY_SOLVER_CONTACTS` flag that [`Self::attach`] did not turn on.
+    fn hooked_by_user(&self, ctx: &ContactModificationContext) -> bool {
+        [ctx.collider1, ctx.collider2].into_iter().any(|h| {
+            ctx.colliders.get(h).is_some_and(|c| {
+                c.active_hooks()
+                    .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
+            }) && !(self.flagged.contains(h) && self.attached.contains(h))
+        })
+    }
+
     /// stickslip's `modify_solver_contacts` with `inner` as the wrapped hooks instead of the
     /// modifier's own (for integrations whose user hooks only exist during a step, such as
     /// bevy_rapier's `BevyPhysicsHooks`): pairs stickslip does not own go to `inner` alone; on
-    /// its pairs `inner` runs first, on its own `user_data`.
+    /// its pairs `inner` runs first, on its own `user_data`. `inner` runs only where rapier
+    /// would call it without stickslip: on pairs with a collider whose
+    /// `MODIFY_SOLVER_CONTACTS` flag is not one [`Self::attach`] turned on.
     pub fn modify_solver_contacts_with<I: PhysicsHooks + ?Sized>(
         &self,
         ctx: &mut ContactModificationContext,
         inner: &I,
     ) {
+        // The wrapped hook sees the pairs it would see without stickslip: those with a
+        // collider whose hook flag is not stickslip's.
+        let inner = &UsersPairsOnly {
+            hooks: inner,
+            theirs: self.hooked_by_user(ctx),
+        };
         // Pairs without an attached collider are the user's alone.
         if !self.owns(ctx.collider1, ctx.collider2) {
             inner.modify_solver_contacts(ctx);

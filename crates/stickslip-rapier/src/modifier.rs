@@ -192,7 +192,9 @@ impl StickSlip<()> {
 }
 
 impl<H> StickSlip<H> {
-    /// A modifier wrapping the user's hooks `inner`.
+    /// A modifier wrapping the user's hooks `inner`, called on the pairs rapier would call
+    /// them for without stickslip (a `MODIFY_SOLVER_CONTACTS` flag [`Self::attach`] turned on
+    /// is stickslip's, not theirs).
     pub fn with_hooks(material: impl Into<FrictionMaterial>, inner: H) -> Self {
         StickSlip {
             config: StickSlipConfig::default(),
@@ -330,14 +332,16 @@ impl<H> StickSlip<H> {
             return;
         }
         if let Some(c) = colliders.get_mut(collider) {
-            // Ours to turn off again in `detach` if we turn it on; a flag the user set stays.
-            // (The set keeps no generations: detach a collider before removing it, or a
-            // collider that reuses its index and has its own flag may lose it in `detach`.)
-            if !c
+            // Ours to turn off again in `detach` if we turn it on; a flag the user set stays
+            // theirs (their wrapped hook runs on its pairs). Attaching again (a new material)
+            // keeps what was decided when the collider was first attached, unless the flag
+            // has been turned off since (then stickslip's again). (The set keeps no
+            // generations: detach a collider before removing it.)
+            let theirs = c
                 .active_hooks()
-                .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
-            {
-                self.flagged.set(collider, true);
+                .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS);
+            if !self.attached.contains(collider) || !theirs {
+                self.flagged.set(collider, !theirs);
             }
             c.set_active_hooks(c.active_hooks() | ActiveHooks::MODIFY_SOLVER_CONTACTS);
         }

@@ -96,6 +96,9 @@ impl<H: PhysicsHooks> Rig<H> {
                 }
             }
             Friction::Law(law) => {
+                // The user's hook runs where the user flags it (as in the plain rig).
+                let c = &mut scene.world.colliders[scene.ground];
+                c.set_active_hooks(ActiveHooks::MODIFY_SOLVER_CONTACTS);
                 let mut m = StickSlip::with_hooks(FrictionMaterial::new(law.clone()), hooks)
                     .with_config(config)
                     .expect("valid config");

@@ -99,8 +99,10 @@ impl BoxScene {
 }
 
 /// A conveyor: the `belt` collider's surface moves at `velocity` (world), through rapier's
-/// per-contact target tangent velocity. Wrap it with [`crate::StickSlip::with_hooks`] and the
-/// friction law works relative to the moving surface.
+/// per-contact target tangent velocity. Flag the belt collider with
+/// `ActiveHooks::MODIFY_SOLVER_CONTACTS` (as without stickslip), wrap the conveyor with
+/// [`crate::StickSlip::with_hooks`], and the friction law works relative to the moving
+/// surface.
 #[derive(Debug, Clone, Copy)]
 pub struct Conveyor {
     /// The belt collider.
