@@ -12,8 +12,8 @@
 //! stickslip's flag. A panicking wrapped hook leaves no lock held: the next steps
 //! finish (bounded by a join timeout, not by the test harness) and the world is consistent.
 //! Composite shapes keep one record per manifold. The silent cases speak: reports and totals
-//! are an error when read-back is off, a hook call without `begin_step` and a non-Simplified
-//! friction model log a warning once.
+//! are an error when read-back is off, a hook call without `begin_step`, a non-Simplified
+//! friction model and a step dt out of range (not a pause, dt = 0) log a warning once.
 
 use rapier3d::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -697,4 +697,28 @@ fn an_unsupported_friction_model_warns_once() {
         m.step(&mut world);
     }
     assert_eq!(count("needs FrictionModel::Simplified") - before, 1);
+}
+
+#[test]
+fn a_step_dt_out_of_range_warns_once_and_a_pause_does_not() {
+    let mut world = tilted_world(0.0);
+    let ground = world.insert_collider(ColliderBuilder::cuboid(5.0, 0.1, 5.0), None);
+    let (b, c) = cube(Vector::new(0.0, 0.2, 0.0));
+    world.insert(b, c);
+    let needle = "stickslip leaves such steps to rapier's friction";
+    let before = count(needle);
+    let mut m = StickSlip::new(FrictionMaterial::new(ep(0.5, 0.5)));
+    m.attach(&mut world.colliders, ground, None);
+    let mut params = world.integration_parameters;
+    for dt in [0.0, 0.0, 2.0, 5.0, 1.0 / 60.0] {
+        params.dt = dt;
+        m.begin_step(&params);
+        m.end_step(&world.narrow_phase, &world.bodies, &world.colliders);
+        if dt == 0.0 {
+            assert_eq!(count(needle), before, "a pause (dt = 0) warned");
+        }
+    }
+    assert_eq!(count(needle) - before, 1, "warned once");
+    // Only the valid step moved the clock.
+    assert!((m.time() - 1.0 / 60.0).abs() < 1e-9, "{}", m.time());
 }

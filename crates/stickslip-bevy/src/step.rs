@@ -74,6 +74,15 @@ impl FrameSteps {
                         *sim_to_render -= dt;
                     }
                 } else {
+                    // bevy_rapier would loop forever (dt <= 0) or step with NaN: no step.
+                    static SAID: std::sync::atomic::AtomicBool =
+                        std::sync::atomic::AtomicBool::new(false);
+                    if !SAID.swap(true, std::sync::atomic::Ordering::Relaxed) {
+                        error!(
+                            "stickslip: TimestepMode::Interpolated with dt = {dt} s (or a \
+                             non-finite lag) cannot be stepped; no rapier step runs"
+                        );
+                    }
                     *sim_to_render = 0.0;
                 }
                 FrameSteps {

@@ -412,7 +412,8 @@ impl<H> StickSlip<H> {
     ///
     /// A step whose `dt` is not a time step ([`valid_dt`]: non-finite, or outside
     /// [[`MIN_DT`], [`MAX_DT`]]) is skipped by the modifier: no contact state, clock or total changes
-    /// (rapier's own step with such a dt is the caller's; [`Self::step`] skips both).
+    /// (rapier's own step with such a dt is the caller's; [`Self::step`] skips both); one that
+    /// is not 0 (a pause) logs a one-time warning.
     ///
     /// stickslip realizes its law with one friction constraint per manifold
     /// (`FrictionModel::Simplified`, rapier's 3D default); a world with another friction model
@@ -431,6 +432,16 @@ impl<H> StickSlip<H> {
         }
         self.clock.open = true;
         let dt = params.dt as f64;
+        // dt = 0 is a paused game (bevy's time scale 0): nothing to say.
+        if !valid_dt(dt) && dt != 0.0 {
+            self.warn_once(
+                Warning::StepDt,
+                &format!(
+                    "stickslip: a step of dt = {dt} s is outside [{MIN_DT}, {MAX_DT}] s; \
+                     stickslip leaves such steps to rapier's friction"
+                ),
+            );
+        }
         self.clock.dt = if valid_dt(dt) { dt } else { 0.0 };
         self.clock.step = self.clock.step.wrapping_add(1);
         self.clock.clustering = params.contact_clustering;

@@ -13,11 +13,13 @@ pub(crate) enum Warning {
     FrictionModel,
     /// Two materials did not combine into a valid law.
     Combine,
+    /// A step's dt outside the modifier's range (not a pause, dt = 0).
+    StepDt,
 }
 
 /// Which warnings were given.
 #[derive(Debug, Default)]
-pub(crate) struct Warned([AtomicBool; 3]);
+pub(crate) struct Warned([AtomicBool; 4]);
 
 impl<H> StickSlip<H> {
     /// Logs `message` at warn level the first time `warning` occurs.
