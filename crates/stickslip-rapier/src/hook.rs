@@ -93,11 +93,13 @@ impl<H> StickSlip<H> {
     /// Whether rapier would call the user's hook on this pair without stickslip: one of its
     /// colliders carries a `MODIFY_SOLVER_CONTACTS` flag that [`Self::attach`] did not turn on.
     fn hooked_by_user(&self, ctx: &ContactModificationContext) -> bool {
+        // The bits first: a pair of colliders stickslip flagged needs no collider lookup.
         [ctx.collider1, ctx.collider2].into_iter().any(|h| {
-            ctx.colliders.get(h).is_some_and(|c| {
-                c.active_hooks()
-                    .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
-            }) && !(self.flagged.contains(h) && self.attached.contains(h))
+            !(self.flagged.contains(h) && self.attached.contains(h))
+                && ctx.colliders.get(h).is_some_and(|c| {
+                    c.active_hooks()
+                        .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
+                })
         })
     }
 
