@@ -712,8 +712,8 @@ fn a_step_dt_out_of_range_warns_once_and_a_pause_does_not() {
     let mut params = world.integration_parameters;
     for dt in [0.0, 0.0, 2.0, 5.0, 1.0 / 60.0] {
         params.dt = dt;
-        m.begin_step(&params);
-        m.end_step(&world.narrow_phase, &world.bodies, &world.colliders);
+        m.begin_step(&params, &world.bodies, &mut world.colliders);
+        m.end_step(&world.narrow_phase, &world.bodies, &mut world.colliders);
         if dt == 0.0 {
             assert_eq!(count(needle), before, "a pause (dt = 0) warned");
         }

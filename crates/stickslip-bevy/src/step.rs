@@ -162,7 +162,9 @@ pub(crate) fn step_simulation_bracketed<H>(
                     keep_awake(state, sim, colliders, bodies);
                     let mut params = sim.integration_parameters;
                     params.dt = steps.step_dt;
-                    state.modifier.begin_step(&params);
+                    state
+                        .modifier
+                        .begin_step(&params, &bodies.bodies, &mut colliders.colliders);
                 }
                 // Surfaces and stickslip's hook flags are the default context's handles.
                 let (surfaces, hook_flags) = if is_default {
@@ -200,7 +202,7 @@ pub(crate) fn step_simulation_bracketed<H>(
                     state.modifier.end_step(
                         &sim.narrow_phase,
                         &bodies.bodies,
-                        &colliders.colliders,
+                        &mut colliders.colliders,
                     );
                     publish_reports(
                         state,

@@ -90,6 +90,11 @@ impl ColliderBits {
         }
     }
 
+    /// Clears every bit (keeping the memory).
+    pub fn clear(&mut self) {
+        self.words.fill(0);
+    }
+
     /// Whether the bit of `handle`'s index is set.
     pub fn contains(&self, handle: ColliderHandle) -> bool {
         Self::index(handle)
@@ -104,5 +109,52 @@ impl ColliderBits {
                 .filter(move |b| word >> b & 1 == 1)
                 .map(move |b| (w * 64 + b) as u32)
         })
+    }
+}
+
+/// [`ColliderBits`] that threads set concurrently (the contact hook runs on rapier's worker
+/// threads with the `parallel` feature). Sized outside the step ([`Self::cover`]); a bit
+/// beyond the size is dropped, never allocated for.
+#[derive(Debug, Default)]
+pub(crate) struct AtomicColliderBits {
+    words: Vec<std::sync::atomic::AtomicU64>,
+}
+
+impl AtomicColliderBits {
+    /// Makes room for `handle`'s bit.
+    pub fn cover(&mut self, handle: ColliderHandle) {
+        if let Some(i) = ColliderBits::index(handle)
+            && self.words.len() <= i / 64
+        {
+            self.words.resize_with(i / 64 + 1, Default::default);
+        }
+    }
+
+    /// Sets the bit of `handle`'s index (if covered).
+    pub fn set(&self, handle: ColliderHandle) {
+        let Some(i) = ColliderBits::index(handle) else {
+            return;
+        };
+        if let Some(w) = self.words.get(i / 64) {
+            w.fetch_or(1 << (i % 64), std::sync::atomic::Ordering::Relaxed);
+        }
+    }
+
+    /// Whether the bit of `handle`'s index is set.
+    pub fn contains(&mut self, handle: ColliderHandle) -> bool {
+        ColliderBits::index(handle)
+            .and_then(|i| {
+                self.words
+                    .get_mut(i / 64)
+                    .map(|w| *w.get_mut() >> (i % 64) & 1 == 1)
+            })
+            .unwrap_or(false)
+    }
+
+    /// Clears every bit.
+    pub fn clear(&mut self) {
+        for w in &mut self.words {
+            *w.get_mut() = 0;
+        }
     }
 }

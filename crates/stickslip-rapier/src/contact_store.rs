@@ -624,6 +624,30 @@ impl ContactStore {
         Some(slot.record())
     }
 
+    /// Runs `f` on the live record `user_data` points at, if it belongs to the pair
+    /// `(c1, c2)`, stores it back and marks it alive at `step` (a recycled manifold, which
+    /// the hook does not see; see `recycle`).
+    pub fn update<R>(
+        &mut self,
+        user_data: u32,
+        c1: ColliderHandle,
+        c2: ColliderHandle,
+        step: u32,
+        f: impl FnOnce(&mut ContactRecord) -> R,
+    ) -> Option<R> {
+        let (index, generation) = decode(user_data)?;
+        let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
+        let d = slots.get_mut(index as usize)?.data();
+        if !fits(d, index_of(c1), index_of(c2), Some(generation)) {
+            return None;
+        }
+        let mut rec = unpack(&d.packed, d.slip_speed, d.meta);
+        let out = f(&mut rec);
+        (d.packed, d.slip_speed) = pack(&rec, d.packed.c1, d.packed.c2);
+        d.meta = (with_state(d.meta, &rec) & !TOUCHED) | parity(step);
+        Some(out)
+    }
+
     /// Number of live records.
     pub fn len(&mut self) -> usize {
         self.slots

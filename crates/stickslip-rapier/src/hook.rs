@@ -7,20 +7,21 @@
 //! one friction constraint per manifold, so stickslip keeps one friction state per manifold.
 
 use crate::contact_step::{ContactInput, step_contact};
-use crate::contact_store::{ContactKey, ContactRecord, ManifoldPart};
+use crate::contact_store::{ContactKey, ContactRecord, ManifoldPart, regime_code};
 use crate::measure::{Measured, centroid, measure, point_velocity};
 use crate::modifier::StickSlip;
 #[cfg(rapier_035)]
 use crate::rapier_compat::RigidManifold;
+use crate::recycle::QUIET_SHARE;
 use crate::tangent::TangentBasis;
 use crate::warnings::Warning;
 use rapier3d::prelude::*;
 use std::sync::atomic::Ordering;
-use stickslip_core::law::Law;
+use stickslip_core::law::{Law, Regime};
 
 /// Whether a shape reaches the narrow phase as parts, each pair of parts with its own
 /// manifold.
-fn is_composite(shape: &dyn Shape) -> bool {
+pub(crate) fn is_composite(shape: &dyn Shape) -> bool {
     shape.as_composite_shape().is_some()
         || matches!(
             shape.shape_type(),
@@ -274,6 +275,19 @@ impl<H> StickSlip<H> {
             for c in m.solver_contacts.iter_mut() {
                 c.tangent_velocity += v;
             }
+        }
+        // Quiet (see `recycle`): the hook would write the same limit and no target again.
+        let quiet = out.holding
+            && rec.forming == 0
+            && rec.regime == regime_code(Regime::Sticking)
+            && out.target == [0.0; 2]
+            && source.is_none()
+            && surface == Vector::ZERO
+            && law.can_stick()
+            && meas.normal_force > 0.0
+            && stickslip_core::vec2::norm(basis.project(meas.mu)) < QUIET_SHARE * out.limit;
+        if !quiet {
+            self.mark_active(bodies, ctx.colliders, c1, c2);
         }
     }
 }

@@ -57,6 +57,7 @@ mod modifier;
 mod pair_law;
 mod rapier_compat;
 mod read_back;
+mod recycle;
 mod report;
 pub mod scenes;
 pub mod snapshot;

@@ -5,6 +5,7 @@ use crate::contact_store::ContactStore;
 use crate::material::FrictionMaterial;
 use crate::measure::{Measured, measure};
 use crate::pair_law::{Combined, PairMaterials, Palette, pair_key};
+use crate::recycle::Recycling;
 use crate::report::{ContactReport, WorldTotals};
 use crate::vibration::VibrationSource;
 use crate::warnings::{Warned, Warning};
@@ -182,6 +183,9 @@ pub struct StickSlip<H = ()> {
     pub(crate) patches_seen: std::sync::Mutex<Vec<(ColliderHandle, ColliderHandle, u32)>>,
     /// What `end_step` measured for those patches, by `user_data`.
     pub(crate) patches_measured: HashMap<u32, Measured>,
+    /// Which attached colliders have their flag off because their contacts are quiet (see
+    /// `recycle`).
+    pub(crate) recycling: Recycling,
 }
 
 impl StickSlip<()> {
@@ -215,6 +219,7 @@ impl<H> StickSlip<H> {
             totals: WorldTotals::default(),
             patches_seen: Default::default(),
             patches_measured: HashMap::new(),
+            recycling: Recycling::default(),
         }
     }
 
@@ -253,6 +258,7 @@ impl<H> StickSlip<H> {
     pub fn set_config(&mut self, config: StickSlipConfig) -> Result<(), ParamError> {
         config.validate()?;
         self.config = config;
+        self.recycling.wake_all = true;
         Ok(())
     }
 
@@ -286,6 +292,8 @@ impl<H> StickSlip<H> {
         material: impl Into<FrictionMaterial>,
     ) {
         self.pair_materials.insert(pair_key(a, b), material.into());
+        self.recycling.wake(a);
+        self.recycling.wake(b);
     }
 
     /// Removes a pair's own material (it combines its colliders' again).
@@ -294,6 +302,8 @@ impl<H> StickSlip<H> {
         a: ColliderHandle,
         b: ColliderHandle,
     ) -> Option<FrictionMaterial> {
+        self.recycling.wake(a);
+        self.recycling.wake(b);
         self.pair_materials.remove(&pair_key(a, b))
     }
 
@@ -345,6 +355,10 @@ impl<H> StickSlip<H> {
             }
             c.set_active_hooks(c.active_hooks() | ActiveHooks::MODIFY_SOLVER_CONTACTS);
         }
+        // The flag is on again: its pairs are hooked next step.
+        self.recycling.quiet.set(collider, false);
+        self.recycling.poses.remove(collider);
+        self.recycling.active.cover(collider);
         self.attached.set(collider, true);
         match material {
             Some(m) => {
@@ -375,6 +389,8 @@ impl<H> StickSlip<H> {
             c.set_solver_groups(groups);
         }
         self.attached.set(collider, false);
+        self.recycling.quiet.set(collider, false);
+        self.recycling.poses.remove(collider);
         self.materials.remove(collider);
         self.pair_materials
             .retain(|&(a, b), _| a != collider && b != collider);
@@ -390,16 +406,19 @@ impl<H> StickSlip<H> {
     pub fn set_material(&mut self, collider: ColliderHandle, material: FrictionMaterial) {
         let id = self.palette.id(material);
         self.materials.insert(collider, id);
+        self.recycling.wake(collider);
     }
 
     /// Attaches a vibration source to a collider; its contacts feel it. A handle whose index no
     /// collider set could hold (≥ 2²⁴, e.g. `ColliderHandle::invalid()`) is ignored.
     pub fn set_vibration(&mut self, collider: ColliderHandle, source: VibrationSource) {
+        self.recycling.wake(collider);
         self.vibrations.insert(collider, source);
     }
 
     /// Removes a collider's vibration source.
     pub fn remove_vibration(&mut self, collider: ColliderHandle) -> Option<VibrationSource> {
+        self.recycling.wake(collider);
         self.vibrations.remove(collider)
     }
 
@@ -408,7 +427,9 @@ impl<H> StickSlip<H> {
         self.vibrations.get(collider)
     }
 
-    /// Call before each step with the step's parameters.
+    /// Call before each step with the step's parameters and the world's bodies and colliders
+    /// (stickslip hooks again, through their flags, the quiet contacts whose material,
+    /// source or pose changed since the last step; see [`Self::end_step`]).
     ///
     /// A step whose `dt` is not a time step ([`valid_dt`]: non-finite, or outside
     /// [[`MIN_DT`], [`MAX_DT`]]) is skipped by the modifier: no contact state, clock or total changes
@@ -418,7 +439,12 @@ impl<H> StickSlip<H> {
     /// stickslip realizes its law with one friction constraint per manifold
     /// (`FrictionModel::Simplified`, rapier's 3D default); a world with another friction model
     /// is stepped all the same, with a one-time warning through `log`.
-    pub fn begin_step(&mut self, params: &IntegrationParameters) {
+    pub fn begin_step(
+        &mut self,
+        params: &IntegrationParameters,
+        bodies: &RigidBodySet,
+        colliders: &mut ColliderSet,
+    ) {
         if params.friction_model != FrictionModel::Simplified {
             self.warn_once(
                 Warning::FrictionModel,
@@ -446,22 +472,29 @@ impl<H> StickSlip<H> {
         self.clock.step = self.clock.step.wrapping_add(1);
         self.clock.clustering = params.contact_clustering;
         *self.moving_surfaces.get_mut() = false;
+        self.recycling.window = crate::rapier_compat::recycle_window(params);
+        self.wake_before_step(bodies, colliders);
     }
 
-    /// Call after each step: sums the totals and builds the reports (as [`Self::read_back`]
-    /// asks) and drops the state of contacts whose manifold rapier no longer holds (rapier
-    /// never says when one disappears; with nothing read back, every [`SWEEP_INTERVAL`]
-    /// steps).
+    /// Call after each step: lets rapier recycle the pairs whose contacts are all quiet
+    /// (holding well inside their limit, nothing driving them: the hook would write the same
+    /// again) by turning stickslip's hook flag off on their colliders, and on again on those
+    /// that stop being quiet (see the `recycle` module docs); sums the totals and builds the
+    /// reports (as [`Self::read_back`] asks) and drops the state of contacts whose manifold
+    /// rapier no longer holds (rapier never says when one disappears; with nothing read back,
+    /// every [`SWEEP_INTERVAL`] steps).
     pub fn end_step(
         &mut self,
         narrow_phase: &NarrowPhase,
         bodies: &RigidBodySet,
-        colliders: &ColliderSet,
+        colliders: &mut ColliderSet,
     ) {
         let dt = self.clock.dt;
         self.clock.open = false;
         self.clock.time += dt;
         self.measure_patches(narrow_phase, dt);
+        self.settle_after_step(narrow_phase, bodies, colliders);
+        let colliders = &*colliders;
         let read_back = self.read_back;
         let mark = self.clock.mark();
         if read_back == ReadBack::Off {
@@ -566,9 +599,13 @@ impl<H> StickSlip<H> {
         if !valid_dt(world.integration_parameters.dt as f64) {
             return;
         }
-        self.begin_step(&world.integration_parameters);
+        self.begin_step(
+            &world.integration_parameters,
+            &world.bodies,
+            &mut world.colliders,
+        );
         world.step_with_events(&*self, events);
-        self.end_step(&world.narrow_phase, &world.bodies, &world.colliders);
+        self.end_step(&world.narrow_phase, &world.bodies, &mut world.colliders);
     }
 
     /// Per-contact reports of the last step: one per contact manifold with solver contacts,

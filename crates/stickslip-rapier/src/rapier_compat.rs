@@ -54,6 +54,20 @@ pub(crate) fn remember_warm_start(rec: &mut crate::contact_store::ContactRecord,
     }
 }
 
+/// The largest relative drift (m) over which rapier recycles a pair's contacts: the
+/// prediction distance (the window of a pair with nothing touching yet), or the recycle
+/// distance if smaller; 0 when rapier does not recycle.
+pub(crate) fn recycle_window(params: &rapier3d::prelude::IntegrationParameters) -> f32 {
+    if params.contact_recycling {
+        params
+            .contact_recycle_distance()
+            .min(params.prediction_distance())
+            .max(0.0)
+    } else {
+        0.0
+    }
+}
+
 #[cfg(rapier_035)]
 pub(crate) use v035::RigidManifold;
 

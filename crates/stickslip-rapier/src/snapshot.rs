@@ -68,6 +68,7 @@ use crate::contact_store::{
     StoreImage,
 };
 use crate::material::FrictionMaterial;
+use crate::measure::Measured;
 use crate::modifier::{Clock, ReadBack, StickSlip, StickSlipConfig};
 use crate::report::{ContactReport, WorldTotals};
 use crate::vibration::{
@@ -625,6 +626,39 @@ pub struct StickSlipSnapshot {
     totals: TotalsSnapshot,
     read_back: ReadBack,
     reports: Vec<ReportSnapshot>,
+    /// Colliders whose hook flag is off because their contacts are quiet, with the pose
+    /// their drift is measured from (see `recycle`).
+    #[serde(default)]
+    quiet: Vec<QuietEntry>,
+    /// Arena indices of the colliders to hook again at the next step.
+    #[serde(default)]
+    wake: Vec<u32>,
+    /// Every quiet collider is to be hooked again at the next step.
+    #[serde(default)]
+    wake_all: bool,
+    /// What the last `end_step` measured for composite contact patches: their next step
+    /// reads it (rapier rebuilds a clustered manifold every step, so its points cannot tell).
+    #[serde(default)]
+    patches: Vec<PatchSnapshot>,
+}
+
+/// A quiet collider and the pose its drift is measured from.
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+struct QuietEntry {
+    collider: Handle,
+    translation: [f32; 3],
+    /// Unit quaternion, x y z w.
+    rotation: [f32; 4],
+    reach: f32,
+}
+
+/// The last solve of a composite contact patch, by the `user_data` of its record.
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+struct PatchSnapshot {
+    user_data: u32,
+    normal_force: f64,
+    mu: [f32; 3],
+    warm_start_impulse: f64,
 }
 
 impl StickSlipSnapshot {
@@ -754,6 +788,38 @@ impl<H> StickSlip<H> {
             },
             read_back: self.read_back,
             reports: self.reports.iter().map(ReportSnapshot::from).collect(),
+            quiet: self
+                .recycling
+                .poses
+                .iter()
+                .filter(|(h, _)| self.recycling.quiet.contains(*h))
+                .map(|(h, (pose, reach))| {
+                    let q = pose.rotation;
+                    QuietEntry {
+                        collider: h.into(),
+                        translation: pose.translation.to_array(),
+                        rotation: [q.x, q.y, q.z, q.w],
+                        reach: *reach,
+                    }
+                })
+                .collect(),
+            wake: self.recycling.wake.indices().collect(),
+            wake_all: self.recycling.wake_all,
+            patches: {
+                let mut patches: Vec<PatchSnapshot> = self
+                    .patches_measured
+                    .iter()
+                    .map(|(&user_data, m)| PatchSnapshot {
+                        user_data,
+                        normal_force: m.normal_force,
+                        mu: m.mu.to_array(),
+                        warm_start_impulse: m.warm_start_impulse,
+                    })
+                    .collect();
+                // The map's order never matters; sorted, equal states give equal snapshots.
+                patches.sort_by_key(|p| p.user_data);
+                patches
+            },
         }
     }
 
@@ -845,8 +911,62 @@ impl<H> StickSlip<H> {
         m.read_back = s.read_back;
         m.reports = reports;
         m.totals = totals;
-        // Not part of a snapshot: a restored composite-shape patch reads its first step from
-        // the manifold's points; combined laws are computed again.
+        for (k, q) in s.quiet.iter().enumerate() {
+            if k > 0 && s.quiet[k - 1].collider.index >= q.collider.index {
+                return Err(invalid(
+                    "quiet colliders",
+                    "not in increasing collider order",
+                ));
+            }
+            let [x, y, z, w] = q.rotation;
+            let finite = q
+                .translation
+                .iter()
+                .chain(&q.rotation)
+                .all(|v| v.is_finite())
+                && q.reach.is_finite();
+            if !finite {
+                return Err(invalid("quiet colliders", "a pose is not finite"));
+            }
+            let h = ColliderHandle::from(q.collider);
+            if colliders.contains(h) && m.flagged.contains(h) && m.attached.contains(h) {
+                m.recycling.quiet.set(h, true);
+                m.recycling.active.cover(h);
+                let pose = Pose::from_parts(
+                    Vector::from_array(q.translation),
+                    Rotation::from_xyzw(x, y, z, w),
+                );
+                m.recycling.poses.insert(h, (pose, q.reach));
+            }
+        }
+        let attached_ids: Vec<u32> = m.attached.indices().collect();
+        for i in attached_ids {
+            if let Some((_, h)) = colliders.get_unknown_gen(i) {
+                m.recycling.active.cover(h);
+            }
+        }
+        m.recycling.wake = restore_bits("colliders to wake", &s.wake, colliders)?;
+        m.recycling.wake_all = s.wake_all;
+        for (k, p) in s.patches.iter().enumerate() {
+            if k > 0 && s.patches[k - 1].user_data >= p.user_data {
+                return Err(invalid("contact patches", "not in increasing order"));
+            }
+            let finite = p.normal_force.is_finite()
+                && p.warm_start_impulse.is_finite()
+                && p.mu.iter().all(|v| v.is_finite());
+            if !finite {
+                return Err(invalid("contact patches", "a value is not finite"));
+            }
+            m.patches_measured.insert(
+                p.user_data,
+                Measured {
+                    normal_force: p.normal_force,
+                    mu: Vector::from_array(p.mu),
+                    warm_start_impulse: p.warm_start_impulse,
+                },
+            );
+        }
+        // Combined laws are computed again.
         Ok(m)
     }
 }

@@ -1,0 +1,393 @@
+//! Quiet contacts recycle.
+//!
+//! rapier skips contact determination for a pair whose relative pose barely moved since its
+//! last full update (`IntegrationParameters::contact_recycling`): the pair keeps its points,
+//! solver contacts, friction coefficient and target velocities. It never does so for a pair
+//! with a hook flag on either collider, so a modifier that keeps its flag on every collider
+//! makes every resting pair pay a full update, and re-picks its points every step (a plank
+//! tower shimmers more than under plain rapier). stickslip therefore turns its own
+//! `MODIFY_SOLVER_CONTACTS` flag off on an attached collider whose contacts are all *quiet*,
+//! and on again before anything its hook would decide can change. The user's own flags are
+//! never touched: a pair the user hooks stays hooked.
+//!
+//! ## A quiet contact, and why recycling it is the same physics
+//! A contact is quiet when the hook held it (the solver's friction stayed below the limit),
+//! it is not forming, its law can stick (Regul creeps: never quiet), it carries a load, no
+//! vibration source acts on either collider, no surface moves under it (no target velocity),
+//! and the friction the last solve needed is below [`QUIET_SHARE`] of the limit. For such a
+//! contact the hook writes the same two things every step: the law's capacity as the friction
+//! limit, and no target velocity; its record only takes the held force and the mean normal
+//! force back from the solve. A recycled pair keeps exactly what the hook last wrote, and the
+//! solver reads it every step, so the solver enforces the same limit with the same target;
+//! after each step [`StickSlip::end_step`] reads the solve of every recycled manifold as the
+//! hook would (normal force, friction, warm start) and updates its record the same way. The
+//! one difference is rapier's own: a recycled pair keeps its contact points instead of
+//! re-picking them, as in plain rapier.
+//!
+//! ## Hooked again in time
+//! A collider's flag goes back on (its pairs get a full, hooked update in the very next step)
+//! when, after a step, one of its pairs that would not be hooked:
+//! - needed [`QUIET_SHARE`] of its limit or more (a load nearing break-away), or lost its load.
+//!   A load that jumps to saturation within one step is seen after that step — when the hook
+//!   would have seen it too: a hooked contact also learns of a saturated solve only at the
+//!   next step, from the same impulses;
+//! - carries a manifold the hook did not write (rapier ran a full update without the hook: a
+//!   new contact patch, a collider the user changed): that one step had rapier's friction;
+//! - has nothing touching yet and a counterpart that moves (a contact may form);
+//!
+//! or when its body moves more than [`MOTION_SHARE`] of the recycle window in a step, or has
+//! drifted (plus the coming step's motion) [`DRIFT_SHARE`] of it since the flag went off
+//! (checked in [`StickSlip::begin_step`], after any teleport or velocity the user set) —
+//! rapier would otherwise run a full update on its own once the pair drifts out of the window
+//! (the window is the prediction distance, or the recycle distance if smaller). A velocity
+//! the user gives an *unattached* counterpart between steps is seen after the step; that step
+//! holds as a hooked contact would (the hook's hold reads the last solve, not the velocity).
+//! Or when the user changes the
+//! collider's material, a pair material, a vibration source or the tuning, or attaches it
+//! again (also in `begin_step`). A hooked manifold that is not quiet marks its colliders
+//! (those of moving bodies when there are any, so one sliding box does not hook a whole
+//! ground). Sleeping pairs are left as they are: rapier does not update them.
+//!
+//! With `contact_recycling` off, or a pause (dt = 0), every flag stays on.
+
+use crate::collider_map::{AtomicColliderBits, ColliderBits, ColliderMap};
+use crate::contact_store::regime_code;
+use crate::measure::measure;
+use crate::modifier::StickSlip;
+use rapier3d::prelude::*;
+use stickslip_core::law::Regime;
+
+/// Share of the friction limit below which a held contact counts as well inside it.
+pub(crate) const QUIET_SHARE: f64 = 0.75;
+/// Share of the recycle window a quiet body may drift (translation, plus the rotation's chord
+/// at the collider's reach) before its contacts are hooked again.
+pub(crate) const DRIFT_SHARE: f32 = 0.25;
+/// Share of the recycle window a body may move in one step and still be quiet.
+pub(crate) const MOTION_SHARE: f32 = 0.05;
+
+/// Which attached colliders have their stickslip flag off, and what decides it.
+#[derive(Debug, Default)]
+pub(crate) struct Recycling {
+    /// Attached colliders whose stickslip hook flag is off: their contacts are quiet.
+    pub quiet: ColliderBits,
+    /// Where each quiet collider's body (or the collider, without one) was when its flag
+    /// went off, and the collider's reach from that pose's origin (m).
+    pub poses: ColliderMap<(Pose, f32)>,
+    /// Colliders a hooked manifold found not quiet during the step (any thread).
+    pub active: AtomicColliderBits,
+    /// Colliders to hook again at the next `begin_step` (a material or source changed).
+    pub wake: ColliderBits,
+    /// Every quiet collider is to be hooked again at the next `begin_step`.
+    pub wake_all: bool,
+    /// Recycle window (m) of the running step; 0 when rapier does not recycle.
+    pub window: f32,
+    /// Scratch: the quiet set being decided (kept to reuse its memory).
+    next: ColliderBits,
+}
+
+impl Recycling {
+    /// Colliders whose contacts must be hooked at the next step.
+    pub fn wake(&mut self, collider: ColliderHandle) {
+        self.wake.set(collider, true);
+    }
+}
+
+/// The pose the drift of `collider` is measured on (its body's, or its own without one) and
+/// the collider's reach from that pose's origin.
+fn anchor(bodies: &RigidBodySet, collider: &Collider) -> (Pose, f32) {
+    let shape_reach = collider.shape().compute_local_bounding_sphere();
+    let local = shape_reach.center.length() + shape_reach.radius;
+    match collider.parent().and_then(|h| bodies.get(h)) {
+        Some(body) => {
+            let offset = collider
+                .position_wrt_parent()
+                .map_or(0.0, |p| p.translation.length());
+            (*body.position(), local + offset)
+        }
+        None => (*collider.position(), local),
+    }
+}
+
+/// How far any point within `reach` of `a`'s origin moved to `b` (translation plus chord).
+fn drift(a: &Pose, b: &Pose, reach: f32) -> f32 {
+    let turn = (b.rotation * a.rotation.inverse()).normalize();
+    // |sin(θ/2)| is the length of the quaternion's vector part; the chord is 2 r sin(θ/2).
+    let half_sin = Vector::new(turn.x, turn.y, turn.z).length();
+    (b.translation - a.translation).length() + 2.0 * half_sin * reach
+}
+
+/// How far the collider's material points can move in one step at the body's velocity.
+fn step_motion(bodies: &RigidBodySet, collider: &Collider, reach: f32, dt: f32) -> f32 {
+    match collider.parent().and_then(|h| bodies.get(h)) {
+        Some(b) if !b.is_fixed() && !b.is_sleeping() => {
+            (b.linvel().length() + b.angvel().length() * reach) * dt
+        }
+        _ => 0.0,
+    }
+}
+
+/// Whether the collider's body is fixed (or it has none).
+fn is_fixed(bodies: &RigidBodySet, colliders: &ColliderSet, h: ColliderHandle) -> bool {
+    colliders
+        .get(h)
+        .and_then(|c| c.parent())
+        .and_then(|b| bodies.get(b))
+        .is_none_or(|b| b.is_fixed())
+}
+
+/// Whether nothing moves the pair: both bodies asleep or fixed (rapier skips it).
+fn at_rest(bodies: &RigidBodySet, colliders: &ColliderSet, h: ColliderHandle) -> bool {
+    colliders
+        .get(h)
+        .and_then(|c| c.parent())
+        .and_then(|b| bodies.get(b))
+        .is_none_or(|b| b.is_fixed() || b.is_sleeping())
+}
+
+impl<H> StickSlip<H> {
+    /// Marks the colliders a hooked manifold that is not quiet must keep hooked: those of
+    /// moving bodies among its attached ones (all attached ones if none moves).
+    pub(crate) fn mark_active(
+        &self,
+        bodies: &RigidBodySet,
+        colliders: &ColliderSet,
+        c1: ColliderHandle,
+        c2: ColliderHandle,
+    ) {
+        for h in self.sides_to_hook(bodies, colliders, c1, c2) {
+            self.recycling.active.set(h);
+        }
+    }
+
+    /// The attached colliders of a pair whose flag keeps the pair hooked: those of moving
+    /// bodies, or every attached one if none moves.
+    fn sides_to_hook(
+        &self,
+        bodies: &RigidBodySet,
+        colliders: &ColliderSet,
+        c1: ColliderHandle,
+        c2: ColliderHandle,
+    ) -> impl Iterator<Item = ColliderHandle> {
+        let (a1, a2) = (self.attached.contains(c1), self.attached.contains(c2));
+        let (m1, m2) = (
+            a1 && !is_fixed(bodies, colliders, c1),
+            a2 && !is_fixed(bodies, colliders, c2),
+        );
+        let (k1, k2) = if m1 || m2 { (m1, m2) } else { (a1, a2) };
+        [(c1, k1), (c2, k2)]
+            .into_iter()
+            .filter_map(|(h, keep)| keep.then_some(h))
+    }
+
+    /// Before a step: hooks again the quiet colliders that were asked to be (changed
+    /// materials or sources), or whose body drifted (see the module docs).
+    pub(crate) fn wake_before_step(&mut self, bodies: &RigidBodySet, colliders: &mut ColliderSet) {
+        let dt = self.clock.dt as f32;
+        let r = &mut self.recycling;
+        let limit = DRIFT_SHARE * r.window;
+        let mut woken = std::mem::take(&mut r.next);
+        woken.clear();
+        for i in r.quiet.indices() {
+            let Some((c, h)) = colliders.get_unknown_gen(i) else {
+                continue;
+            };
+            // Drifted, or given a velocity (by the user, between steps) that leaves the window.
+            let moved = r.poses.get(h).is_none_or(|(pose, reach)| {
+                let (now, _) = anchor(bodies, c);
+                !(drift(pose, &now, *reach) + step_motion(bodies, c, *reach, dt) <= limit)
+            });
+            if r.wake_all || r.wake.contains(h) || moved || !(r.window > 0.0) {
+                woken.set(h, true);
+            }
+        }
+        for i in woken.indices() {
+            if let Some((c, h)) = colliders.get_unknown_gen_mut(i) {
+                c.set_active_hooks(c.active_hooks() | ActiveHooks::MODIFY_SOLVER_CONTACTS);
+                r.quiet.set(h, false);
+                r.poses.remove(h);
+            }
+        }
+        r.next = woken;
+        r.wake.clear();
+        r.wake_all = false;
+    }
+
+    /// After a step: decides which attached colliders go quiet or are hooked again, reads
+    /// the solve of the manifolds that will be recycled and updates their records as the
+    /// hook would, and sets the flags (see the module docs).
+    pub(crate) fn settle_after_step(
+        &mut self,
+        narrow_phase: &NarrowPhase,
+        bodies: &RigidBodySet,
+        colliders: &mut ColliderSet,
+    ) {
+        let window = self.recycling.window;
+        let dt = self.clock.dt;
+        if !(window > 0.0 && dt > 0.0) {
+            self.recycling.active.clear();
+            if !(window > 0.0) {
+                self.recycling.wake_all = true;
+            }
+            return;
+        }
+        let mut next = std::mem::take(&mut self.recycling.next);
+        next.clear();
+        // 1. Colliders that may go (or stay) quiet: stickslip's flag, not marked by the hook,
+        //    no source, a body that barely moves.
+        let step_limit = MOTION_SHARE * window;
+        for i in self.flagged.indices() {
+            let Some((c, h)) = colliders.get_unknown_gen(i) else {
+                continue;
+            };
+            if !self.attached.contains(h)
+                || self.recycling.active.contains(h)
+                || self.vibrations.get(h).is_some()
+            {
+                continue;
+            }
+            let (_, reach) = anchor(bodies, c);
+            if step_motion(bodies, c, reach, dt as f32) <= step_limit {
+                next.set(h, true);
+            }
+        }
+        // 2. Every pair of stickslip's that will not be hooked: its manifolds must be quiet.
+        let mark = self.clock.mark();
+        let flagged = &self.flagged;
+        let hooked_next = |h: ColliderHandle, attached: bool, next: &ColliderBits| {
+            if attached && flagged.contains(h) {
+                !next.contains(h)
+            } else {
+                colliders.get(h).is_some_and(|c| {
+                    c.active_hooks()
+                        .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
+                })
+            }
+        };
+        let stiffness_time = self.config.stiffness_time;
+        let clustering = self.clock.clustering;
+        for pair in narrow_phase.contact_pairs() {
+            let (c1, c2) = (pair.collider1, pair.collider2);
+            let (a1, a2) = (self.attached.contains(c1), self.attached.contains(c2));
+            if !(a1 || a2)
+                || hooked_next(c1, a1, &next)
+                || hooked_next(c2, a2, &next)
+                || (at_rest(bodies, colliders, c1) && at_rest(bodies, colliders, c2))
+            {
+                continue;
+            }
+            let quiet = if pair.has_any_active_contact() {
+                let patches = clustering
+                    && [c1, c2].into_iter().any(|h| {
+                        colliders
+                            .get(h)
+                            .is_some_and(|c| crate::hook::is_composite(c.shape()))
+                    });
+                let mut all = true;
+                for m in pair.solver_manifolds() {
+                    if m.data.solver_contacts.is_empty() {
+                        continue;
+                    }
+                    let n = m.data.normal;
+                    let measured = self.store.update(m.data.user_data, c1, c2, mark, |rec| {
+                        let meas = measure(
+                            m,
+                            &m.data.solver_contacts,
+                            dt,
+                            crate::rapier_compat::warm_before(rec),
+                        );
+                        let f_n = meas.normal_force;
+                        let tangential = meas.mu - n * n.dot(meas.mu);
+                        let ok = rec.limit.to_bits() == m.data.friction.to_bits()
+                            && rec.regime == regime_code(Regime::Sticking)
+                            && rec.forming == 0
+                            && rec.limit > 0.0
+                            && f_n > 0.0
+                            && (tangential.length() as f64) < QUIET_SHARE * rec.limit as f64;
+                        if ok {
+                            // What the hook does to a held contact: the held force and the
+                            // mean normal force from the solve.
+                            crate::rapier_compat::remember_warm_start(rec, meas.warm_start_impulse);
+                            rec.force = tangential * f_n as f32;
+                            let w = (dt / stiffness_time).min(1.0);
+                            let mean = rec.mean_normal_force as f64;
+                            rec.mean_normal_force = (mean + w * (f_n - mean)) as f32;
+                        }
+                        (ok, meas)
+                    });
+                    match measured {
+                        Some((true, meas)) => {
+                            if patches {
+                                self.patches_measured.insert(m.data.user_data, meas);
+                            }
+                        }
+                        _ => {
+                            all = false;
+                            break;
+                        }
+                    }
+                }
+                all
+            } else {
+                // Nothing touches yet: a moving counterpart may make a contact rapier would
+                // form without the hook.
+                let moving = |h: ColliderHandle| {
+                    colliders.get(h).is_some_and(|c| {
+                        let (_, reach) = anchor(bodies, c);
+                        step_motion(bodies, c, reach, dt as f32) > step_limit
+                    })
+                };
+                !(moving(c1) || moving(c2))
+            };
+            if !quiet {
+                for h in self.sides_to_hook(bodies, colliders, c1, c2) {
+                    next.set(h, false);
+                }
+            }
+        }
+        // 3. The flags.
+        let r = &mut self.recycling;
+        for i in self.flagged.indices() {
+            let Some((c, h)) = colliders.get_unknown_gen_mut(i) else {
+                continue;
+            };
+            let (now, then) = (r.quiet.contains(h), next.contains(h));
+            if now == then {
+                continue;
+            }
+            if then {
+                c.set_active_hooks(c.active_hooks() - ActiveHooks::MODIFY_SOLVER_CONTACTS);
+            } else {
+                c.set_active_hooks(c.active_hooks() | ActiveHooks::MODIFY_SOLVER_CONTACTS);
+                r.poses.remove(h);
+            }
+        }
+        for i in next.indices() {
+            if let Some((c, h)) = colliders.get_unknown_gen(i)
+                && !r.quiet.contains(h)
+            {
+                r.poses.insert(h, anchor(bodies, c));
+            }
+        }
+        r.next = std::mem::replace(&mut r.quiet, next);
+        r.active.clear();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn drift_adds_the_rotation_chord_at_the_reach() {
+        let a = Pose::from_translation(Vector::new(1.0, 2.0, 3.0));
+        let mut b = a;
+        b.translation.x += 0.001;
+        assert!((drift(&a, &b, 10.0) - 0.001).abs() < 1e-6);
+        // A quarter turn about y: chord 2 r sin(π/4) = √2 r.
+        let b = Pose::from_parts(
+            a.translation,
+            Rotation::from_axis_angle(Vector::Y, std::f32::consts::FRAC_PI_2),
+        );
+        assert!((drift(&a, &b, 2.0) - 2.0 * std::f32::consts::SQRT_2).abs() < 1e-5);
+    }
+}
