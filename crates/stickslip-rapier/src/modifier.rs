@@ -277,6 +277,12 @@ impl<H> StickSlip<H> {
         self.materials.get(collider).map(|&id| self.palette.get(id))
     }
 
+    /// Whether `collider`'s contacts are quiet and rapier recycles them: stickslip turned its
+    /// hook flag off (see [`Self::end_step`]).
+    pub fn is_recycled(&self, collider: ColliderHandle) -> bool {
+        self.recycling.quiet.contains(collider) && self.attached.contains(collider)
+    }
+
     /// Whether `collider` is attached ([`Self::attach`]): its pairs are stickslip's.
     pub fn is_attached(&self, collider: ColliderHandle) -> bool {
         self.attached.contains(collider)
