@@ -4,9 +4,12 @@
 //! [`StickSlipSnapshot`] is the rest: everything the [`StickSlip`] modifier keeps except your
 //! wrapped hooks `H` — the tuning, the default and per-collider materials, the attached
 //! colliders and per-pair materials, the vibration sources, the colliders whose hook flag it
-//! turned on, the per-contact friction state (law
-//! state, mean normal forces, and the slot/generation layout that rapier's
-//! manifolds point at through their `user_data`), the clock, the totals and the last reports.
+//! turned on and which of those it turned off again because their contacts are quiet
+//! (recycled, with the poses their drift is measured from), the per-contact friction state
+//! (law state, mean normal forces, and the slot/generation layout that rapier's manifolds
+//! point at through their `user_data`), the last solve measured at each contact patch of a
+//! composite shape (a clustered patch reads its next step from it), the clock, the totals and
+//! the last reports.
 //! A world resumed from both continues exactly as the uninterrupted one, bit for bit.
 //!
 //! ## Save and resume a world

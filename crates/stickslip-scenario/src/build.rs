@@ -283,6 +283,13 @@ impl Scenario {
 
     /// Checks every value and reference without building anything.
     pub fn validate(&self) -> Result<(), BuildError> {
+        // The name is rerun's application id, which must not be empty.
+        if self.name.trim().is_empty() {
+            return Err(invalid(
+                "name",
+                "must not be empty (it names the run, and is rerun's application id)",
+            ));
+        }
         let w = &self.world;
         magnitude3("world.gravity", w.gravity)?;
         positive("world.dt", w.dt)?;

@@ -4,7 +4,8 @@
 //! sizes, unknown references, too-stiff springs) name the field too. Counts, sizes and
 //! magnitudes beyond `stickslip_scenario::limits` (a `repeat.count` of 1e9, 1e9 solver
 //! iterations, runs of 1e18 steps, numbers that overflow or underflow rapier's f32) are
-//! validation errors with field and line, found without allocating by the count. Loading or
+//! validation errors with field and line, found without allocating by the count. An empty
+//! scenario name is a validation error naming `name`. Loading or
 //! building never panics, even on every truncation of every shipped scenario.
 
 use stickslip_scenario::limits::*;
@@ -142,6 +143,16 @@ fn nan_and_negative_sizes_are_typed_validation_errors() {
     assert_eq!(e.field(), Some("world.dt"));
     let e = err(&replace_line(3, "dt = inf"));
     assert_eq!(e.field(), Some("world.dt"));
+}
+
+#[test]
+fn an_empty_name_is_a_typed_error_naming_the_field() {
+    // Not rerun's "invalid application id" at run time: the scenario names the field.
+    for name in ["name = \"\"", "name = \"   \""] {
+        let e = err(&replace_line(1, name));
+        assert_eq!(e.field(), Some("name"), "{e}");
+        assert_eq!(e.line(), Some(1));
+    }
 }
 
 #[test]
