@@ -126,22 +126,18 @@ fn step_motion(bodies: &RigidBodySet, collider: &Collider, reach: f32, dt: f32) 
     }
 }
 
-/// Whether the collider's body is fixed (or it has none).
-fn is_fixed(bodies: &RigidBodySet, colliders: &ColliderSet, h: ColliderHandle) -> bool {
+/// Whether the collider's body is fixed (or it has none), or, with `or_asleep`, asleep.
+fn is_still(
+    bodies: &RigidBodySet,
+    colliders: &ColliderSet,
+    h: ColliderHandle,
+    or_asleep: bool,
+) -> bool {
     colliders
         .get(h)
         .and_then(|c| c.parent())
         .and_then(|b| bodies.get(b))
-        .is_none_or(|b| b.is_fixed())
-}
-
-/// Whether nothing moves the pair: both bodies asleep or fixed (rapier skips it).
-fn at_rest(bodies: &RigidBodySet, colliders: &ColliderSet, h: ColliderHandle) -> bool {
-    colliders
-        .get(h)
-        .and_then(|c| c.parent())
-        .and_then(|b| bodies.get(b))
-        .is_none_or(|b| b.is_fixed() || b.is_sleeping())
+        .is_none_or(|b| b.is_fixed() || (or_asleep && b.is_sleeping()))
 }
 
 impl<H> StickSlip<H> {
@@ -170,8 +166,8 @@ impl<H> StickSlip<H> {
     ) -> impl Iterator<Item = ColliderHandle> {
         let (a1, a2) = (self.attached.contains(c1), self.attached.contains(c2));
         let (m1, m2) = (
-            a1 && !is_fixed(bodies, colliders, c1),
-            a2 && !is_fixed(bodies, colliders, c2),
+            a1 && !is_still(bodies, colliders, c1, false),
+            a2 && !is_still(bodies, colliders, c2, false),
         );
         let (k1, k2) = if m1 || m2 { (m1, m2) } else { (a1, a2) };
         [(c1, k1), (c2, k2)]
@@ -271,7 +267,7 @@ impl<H> StickSlip<H> {
             if !(a1 || a2)
                 || hooked_next(c1, a1, &next)
                 || hooked_next(c2, a2, &next)
-                || (at_rest(bodies, colliders, c1) && at_rest(bodies, colliders, c2))
+                || (is_still(bodies, colliders, c1, true) && is_still(bodies, colliders, c2, true))
             {
                 continue;
             }
