@@ -2,8 +2,9 @@
 //!
 //! Measures, for each scene of `benches/common` (boxes on a plane at ≈1k and ≈10k contact
 //! points, a 4-high pile at ≈10k, a 250-contact chain driven at 50 Hz, a vibratory trough with
-//! 480 parts, 3 × 3 plank towers of 432 planks, 400 rolling balls; a plane at ≈100k points with
-//! `STICKSLIP_BENCH_FULL=1`):
+//! 480 parts, 3 × 3 plank towers of 432 planks, 400 rolling balls; after rapier's examples, a
+//! drum of 1000 tumbling cubes, 384 bodies on a heightfield, 256 compounds, 216 boxes on
+//! swinging platforms, 1000 dominoes; a plane at ≈100k points with `STICKSLIP_BENCH_FULL=1`):
 //! - criterion (thread CPU time, see [`ThreadCpu`]): one `PhysicsWorld` step with plain rapier (`FrictionModel::Simplified`
 //!   and `::Coulomb`), a no-op contact hook, and stickslip with EP, Regul, Phys, and EP with a
 //!   time-resolved and an averaged vibration source;
@@ -181,6 +182,11 @@ fn scenes(mode: Mode) -> Vec<(Scene, &'static [Variant])> {
             &Variant::ALL,
         ),
         (Scene::Rolling { balls: 400 }, &Variant::ALL),
+        (Scene::Drum { cubes: 1000 }, SCALING),
+        (Scene::Heightfield { bodies: 384 }, SCALING),
+        (Scene::Compounds { bodies: 256 }, SCALING),
+        (Scene::Platforms { boxes: 216 }, SCALING),
+        (Scene::Dominoes { count: 1000 }, SCALING),
     ];
     if mode == Mode::Full {
         v.push((Scene::plane_for_points(100_000), SCALING));

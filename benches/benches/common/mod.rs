@@ -15,6 +15,18 @@
 //!   enough to stand still in plain rapier), n planks, dt = 1/60 s;
 //! - `rolling_<n>`: n balls (r 0.1 m) rolling without slipping across a fixed ground at 1 m/s,
 //!   dt = 1/60 s.
+//!
+//! Scenes after rapier's own `examples3d` (shapes and sizes of the kind the examples use,
+//! friction 0.5, sleeping left on as the examples leave it, stickslip on every collider):
+//! - `drum_<n>`: n cubes (0.2 m) tumbling in a closed drum (r 3 m) turning at 1 rad/s on a
+//!   velocity-based kinematic body (the washer example);
+//! - `heightfield_<n>`: n boxes, balls and capsules dropped on a wavy heightfield;
+//! - `compounds_<n>`: n U-shaped compound bodies (three cuboids) dropped in a heap;
+//! - `platforms_<n>`: n boxes in 4-high stacks on six position-based kinematic platforms
+//!   swinging 1 m at 0.2 Hz (peak acceleration 1.6 m/s², below μg: the stacks ride along);
+//! - `dominoes_<n>`: n dominoes in rows of 100, the first of each row pushed.
+//!
+//! All at dt = 1/60 s.
 #![allow(dead_code)]
 
 use rapier3d::prelude::*;
@@ -49,6 +61,16 @@ pub enum Scene {
     Towers { grid: usize, layers: usize },
     /// `balls` balls rolling across the ground.
     Rolling { balls: usize },
+    /// `cubes` cubes tumbling in a turning drum.
+    Drum { cubes: usize },
+    /// `bodies` mixed bodies dropped on a heightfield.
+    Heightfield { bodies: usize },
+    /// `bodies` U-shaped compounds dropped in a heap.
+    Compounds { bodies: usize },
+    /// `boxes` boxes in stacks on swinging kinematic platforms.
+    Platforms { boxes: usize },
+    /// `count` dominoes in rows of 100, the first of each row pushed.
+    Dominoes { count: usize },
 }
 
 impl Scene {
@@ -68,6 +90,11 @@ impl Scene {
             Scene::Trough { parts } => format!("trough_{parts}"),
             Scene::Towers { grid, layers } => format!("towers_{}", grid * grid * layers * 4),
             Scene::Rolling { balls } => format!("rolling_{balls}"),
+            Scene::Drum { cubes } => format!("drum_{cubes}"),
+            Scene::Heightfield { bodies } => format!("heightfield_{bodies}"),
+            Scene::Compounds { bodies } => format!("compounds_{bodies}"),
+            Scene::Platforms { boxes } => format!("platforms_{boxes}"),
+            Scene::Dominoes { count } => format!("dominoes_{count}"),
         }
     }
 
@@ -90,6 +117,21 @@ impl Scene {
             Scene::Rolling { balls } => {
                 format!("{balls} balls rolling across a plane at 1 m/s, dt 1/60 s")
             }
+            Scene::Drum { cubes } => {
+                format!("{cubes} cubes tumbling in a drum turning at 1 rad/s, dt 1/60 s")
+            }
+            Scene::Heightfield { bodies } => {
+                format!("{bodies} boxes, balls and capsules dropped on a heightfield, dt 1/60 s")
+            }
+            Scene::Compounds { bodies } => {
+                format!("{bodies} U-shaped compounds dropped in a heap, dt 1/60 s")
+            }
+            Scene::Platforms { boxes } => format!(
+                "{boxes} boxes in 4-high stacks on six platforms swinging 1 m at 0.2 Hz, dt 1/60 s"
+            ),
+            Scene::Dominoes { count } => {
+                format!("{count} dominoes in rows of 100 toppling, dt 1/60 s")
+            }
         }
     }
 
@@ -102,6 +144,7 @@ impl Scene {
             | Scene::Rolling { .. } => 1.0 / 60.0,
             Scene::Chain { .. } => 1.0 / 1000.0,
             Scene::Trough { .. } => 1.0 / 500.0,
+            _ => 1.0 / 60.0,
         }
     }
 
@@ -114,6 +157,7 @@ impl Scene {
             | Scene::Rolling { .. } => 5.0,
             Scene::Chain { .. } => 100.0,
             Scene::Trough { .. } => 50.0,
+            _ => 5.0,
         }
     }
 
@@ -126,6 +170,10 @@ impl Scene {
             | Scene::Rolling { .. } => 60,
             Scene::Chain { .. } => 200,
             Scene::Trough { .. } => 250,
+            // Dropped heaps land and start settling; the drum turns a quarter; the first
+            // dominoes fall.
+            Scene::Drum { .. } | Scene::Heightfield { .. } | Scene::Compounds { .. } => 90,
+            Scene::Platforms { .. } | Scene::Dominoes { .. } => 60,
         }
     }
 }
@@ -226,13 +274,15 @@ enum Stepper {
     StickSlip(Box<StickSlip>),
 }
 
+mod examples;
+
 /// A kinematic body moved along `direction` by `amplitude · sin(2π f t)` around `origin`.
-struct Driver {
-    body: RigidBodyHandle,
-    origin: Vector,
-    direction: Vector,
-    amplitude: f32,
-    frequency: f32,
+pub(crate) struct Driver {
+    pub body: RigidBodyHandle,
+    pub origin: Vector,
+    pub direction: Vector,
+    pub amplitude: f32,
+    pub frequency: f32,
 }
 
 /// A scene being stepped by a variant.
@@ -240,7 +290,7 @@ pub struct Bench {
     /// The world.
     pub world: PhysicsWorld,
     stepper: Stepper,
-    driver: Option<Driver>,
+    drivers: Vec<Driver>,
     time: f64,
     /// Colliders the hooks are attached to.
     pub hooked: Vec<ColliderHandle>,
@@ -262,7 +312,7 @@ impl Bench {
     pub fn new(scene: Scene, variant: Variant) -> Bench {
         let mut world = PhysicsWorld::default();
         let mut hooked = Vec::new();
-        let mut driver = None;
+        let mut drivers = Vec::new();
         let vib_host;
         match scene {
             Scene::Plane { boxes } | Scene::Pile { stacks: boxes, .. } => {
@@ -323,7 +373,7 @@ impl Bench {
                     world.insert_impulse_joint(prev, body, spring);
                     prev = body;
                 }
-                driver = Some(Driver {
+                drivers.push(Driver {
                     body: drive,
                     origin,
                     direction: Vector::X,
@@ -378,7 +428,7 @@ impl Bench {
                     hooked.push(c);
                 }
                 let throw = 25f32.to_radians();
-                driver = Some(Driver {
+                drivers.push(Driver {
                     body: trough,
                     origin,
                     direction: Vector::new(throw.cos(), throw.sin(), 0.0),
@@ -456,6 +506,13 @@ impl Bench {
                     hooked.push(c);
                 }
             }
+            Scene::Drum { .. }
+            | Scene::Heightfield { .. }
+            | Scene::Compounds { .. }
+            | Scene::Platforms { .. }
+            | Scene::Dominoes { .. } => {
+                vib_host = examples::build(scene, &mut world, &mut hooked, &mut drivers);
+            }
         }
         world.integration_parameters.dt = scene.dt();
         if variant == Variant::PlainCoulomb {
@@ -502,7 +559,7 @@ impl Bench {
         Bench {
             world,
             stepper,
-            driver,
+            drivers,
             time: 0.0,
             hooked,
         }
@@ -521,7 +578,7 @@ impl Bench {
     #[inline]
     pub fn step(&mut self) {
         let dt = self.world.integration_parameters.dt as f64;
-        if let Some(d) = &self.driver {
+        for d in &self.drivers {
             let t = (self.time + dt) as f32;
             let s = (2.0 * std::f32::consts::PI * d.frequency * t).sin() * d.amplitude;
             let to = d.origin + d.direction * s;

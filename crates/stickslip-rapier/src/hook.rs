@@ -185,7 +185,18 @@ impl<H> StickSlip<H> {
                     patch.then(|| self.patches_measured.get(&ours)).flatten(),
                 );
                 if patch {
-                    crate::contact_store::lock(&self.patches_seen).push((key.c1, key.c2, ours));
+                    // A dynamic side first: the narrow phase finds a pair by walking the
+                    // first collider's pairs, and a composite ground or drum has hundreds.
+                    let dynamic = |b: Option<RigidBodyHandle>| {
+                        b.and_then(|b| ctx.bodies.get(b))
+                            .is_some_and(|b| b.is_dynamic())
+                    };
+                    let (a, b) = if !dynamic(ctx.rigid_body1) {
+                        (ctx.collider2, ctx.collider1)
+                    } else {
+                        (ctx.collider1, ctx.collider2)
+                    };
+                    crate::contact_store::lock(&self.patches_seen).push((a, b, ours));
                 }
             });
     }

@@ -83,6 +83,12 @@ pub(crate) struct Recycling {
     pub window: f32,
     /// Scratch: the quiet set being decided (kept to reuse its memory).
     next: ColliderBits,
+    /// Scratch: stickslip-flagged colliders whose body is fixed or asleep (or who have none),
+    /// found once per step instead of once per pair.
+    still: ColliderBits,
+    /// Scratch: stickslip-flagged colliders that moved more than [`MOTION_SHARE`] of the
+    /// window in the step, found once per step instead of once per pair.
+    moving: ColliderBits,
 }
 
 impl Recycling {
@@ -95,16 +101,35 @@ impl Recycling {
 /// The pose the drift of `collider` is measured on (its body's, or its own without one) and
 /// the collider's reach from that pose's origin.
 fn anchor(bodies: &RigidBodySet, collider: &Collider) -> (Pose, f32) {
+    let pose = pose_of(bodies, collider);
     let shape_reach = collider.shape().compute_local_bounding_sphere();
     let local = shape_reach.center.length() + shape_reach.radius;
+    let offset = collider
+        .position_wrt_parent()
+        .map_or(0.0, |p| p.translation.length());
+    (pose, local + offset)
+}
+
+/// The pose drift is measured on: the collider's body's, or its own without one.
+fn pose_of(bodies: &RigidBodySet, collider: &Collider) -> Pose {
     match collider.parent().and_then(|h| bodies.get(h)) {
-        Some(body) => {
-            let offset = collider
-                .position_wrt_parent()
-                .map_or(0.0, |p| p.translation.length());
-            (*body.position(), local + offset)
-        }
-        None => (*collider.position(), local),
+        Some(body) => *body.position(),
+        None => *collider.position(),
+    }
+}
+
+/// The collider's reach: remembered with its pose while it is quiet (a changed shape or
+/// offset makes rapier run an unhooked full update, which hooks the collider again), found
+/// from its shape otherwise.
+fn reach_of(
+    poses: &ColliderMap<(Pose, f32)>,
+    bodies: &RigidBodySet,
+    h: ColliderHandle,
+    c: &Collider,
+) -> f32 {
+    match poses.get(h) {
+        Some((_, reach)) => *reach,
+        None => anchor(bodies, c).1,
     }
 }
 
@@ -189,7 +214,7 @@ impl<H> StickSlip<H> {
             };
             // Drifted, or given a velocity (by the user, between steps) that leaves the window.
             let moved = r.poses.get(h).is_none_or(|(pose, reach)| {
-                let (now, _) = anchor(bodies, c);
+                let now = pose_of(bodies, c);
                 !(drift(pose, &now, *reach) + step_motion(bodies, c, *reach, dt) <= limit)
             });
             if r.wake_all || r.wake.contains(h) || moved || !(r.window > 0.0) {
@@ -228,6 +253,10 @@ impl<H> StickSlip<H> {
         }
         let mut next = std::mem::take(&mut self.recycling.next);
         next.clear();
+        let mut still = std::mem::take(&mut self.recycling.still);
+        still.clear();
+        let mut moving = std::mem::take(&mut self.recycling.moving);
+        moving.clear();
         // 1. Colliders that may go (or stay) quiet: stickslip's flag, not marked by the hook,
         //    no source, a body that barely moves.
         let step_limit = MOTION_SHARE * window;
@@ -235,14 +264,24 @@ impl<H> StickSlip<H> {
             let Some((c, h)) = colliders.get_unknown_gen(i) else {
                 continue;
             };
-            if !self.attached.contains(h)
-                || self.recycling.active.contains(h)
-                || self.vibrations.get(h).is_some()
-            {
+            let body = c.parent().and_then(|b| bodies.get(b));
+            if body.is_none_or(|b| b.is_fixed() || b.is_sleeping()) {
+                still.set(h, true);
+                if self.attached.contains(h)
+                    && !self.recycling.active.contains(h)
+                    && self.vibrations.get(h).is_none()
+                {
+                    next.set(h, true);
+                }
                 continue;
             }
-            let (_, reach) = anchor(bodies, c);
-            if step_motion(bodies, c, reach, dt as f32) <= step_limit {
+            let reach = reach_of(&self.recycling.poses, bodies, h, c);
+            if !(step_motion(bodies, c, reach, dt as f32) <= step_limit) {
+                moving.set(h, true);
+            } else if self.attached.contains(h)
+                && !self.recycling.active.contains(h)
+                && self.vibrations.get(h).is_none()
+            {
                 next.set(h, true);
             }
         }
@@ -259,6 +298,13 @@ impl<H> StickSlip<H> {
                 })
             }
         };
+        let is_still_now = |h: ColliderHandle| {
+            if flagged.contains(h) {
+                still.contains(h)
+            } else {
+                is_still(bodies, colliders, h, true)
+            }
+        };
         let stiffness_time = self.config.stiffness_time;
         let clustering = self.clock.clustering;
         for pair in narrow_phase.contact_pairs() {
@@ -267,7 +313,7 @@ impl<H> StickSlip<H> {
             if !(a1 || a2)
                 || hooked_next(c1, a1, &next)
                 || hooked_next(c2, a2, &next)
-                || (is_still(bodies, colliders, c1, true) && is_still(bodies, colliders, c2, true))
+                || (is_still_now(c1) && is_still_now(c2))
             {
                 continue;
             }
@@ -326,13 +372,17 @@ impl<H> StickSlip<H> {
             } else {
                 // Nothing touches yet: a moving counterpart may make a contact rapier would
                 // form without the hook.
-                let moving = |h: ColliderHandle| {
-                    colliders.get(h).is_some_and(|c| {
-                        let (_, reach) = anchor(bodies, c);
-                        step_motion(bodies, c, reach, dt as f32) > step_limit
-                    })
+                let moves = |h: ColliderHandle| {
+                    if flagged.contains(h) {
+                        moving.contains(h)
+                    } else {
+                        colliders.get(h).is_some_and(|c| {
+                            let (_, reach) = anchor(bodies, c);
+                            step_motion(bodies, c, reach, dt as f32) > step_limit
+                        })
+                    }
                 };
-                !(moving(c1) || moving(c2))
+                !(moves(c1) || moves(c2))
             };
             if !quiet {
                 for h in self.sides_to_hook(bodies, colliders, c1, c2) {
@@ -343,13 +393,18 @@ impl<H> StickSlip<H> {
         // 3. The flags.
         let r = &mut self.recycling;
         for i in self.flagged.indices() {
-            let Some((c, h)) = colliders.get_unknown_gen_mut(i) else {
+            // Read first: taking a collider mutably marks it modified, and rapier then
+            // re-processes it (and its pairs) in the next step.
+            let Some((_, h)) = colliders.get_unknown_gen(i) else {
                 continue;
             };
             let (now, then) = (r.quiet.contains(h), next.contains(h));
             if now == then {
                 continue;
             }
+            let Some(c) = colliders.get_mut(h) else {
+                continue;
+            };
             if then {
                 c.set_active_hooks(c.active_hooks() - ActiveHooks::MODIFY_SOLVER_CONTACTS);
             } else {
@@ -365,6 +420,8 @@ impl<H> StickSlip<H> {
             }
         }
         r.next = std::mem::replace(&mut r.quiet, next);
+        r.still = still;
+        r.moving = moving;
         r.active.clear();
     }
 }
