@@ -17,7 +17,8 @@
 //!   dt = 1/60 s.
 //!
 //! Scenes after rapier's own `examples3d` (shapes and sizes of the kind the examples use,
-//! friction 0.5, sleeping left on as the examples leave it, stickslip on every collider):
+//! friction 0.5, sleeping left on as the examples leave it except where the scene would
+//! sleep before it is measured, stickslip on every collider):
 //! - `drum_<n>`: n cubes (0.2 m) tumbling in a closed drum (r 3 m) turning at 1 rad/s on a
 //!   velocity-based kinematic body (the washer example);
 //! - `heightfield_<n>`: n boxes, balls and capsules dropped on a wavy heightfield;

@@ -7,11 +7,21 @@ use serde_json::Value;
 use std::fmt::Write as _;
 use std::path::Path;
 
-/// Target: stickslip step time over the no-op hook on the same colliders (the floor of any
-/// contact modifier), every scene.
-const TIME_TARGET: f64 = 1.05;
-/// Target in the plank towers (every contact a holding stack contact).
-const STACK_TIME_TARGET: f64 = 1.15;
+/// Target (issue 27): EP's step time over plain rapier's in scenes at rest, where stickslip
+/// lets quiet contacts recycle as plain rapier does.
+const REST_TARGET: f64 = 1.10;
+/// Target (issue 27): EP's step time over plain rapier's in active scenes (sliding, tumbling,
+/// driven), where rapier recycles little and stickslip's hook runs on most contacts.
+const ACTIVE_PLAIN_TARGET: f64 = 1.25;
+/// Target (issue 27): EP's step time over the no-op hook on the same colliders in active
+/// scenes (stickslip's own per-contact work), and that of EP with a vibration source.
+const TIME_TARGET: f64 = 1.10;
+/// Scenes at rest (by name prefix): stacks, heaps and rows that stand still once settled.
+const RESTING: [&str; 5] = ["plane_", "pile_", "towers_", "compounds_", "dominoes_"];
+
+fn is_resting(scene: &str) -> bool {
+    RESTING.iter().any(|p| scene.starts_with(p))
+}
 /// The variants that carry the step-time target (EP, and EP with vibration in either mode).
 const TIMED_VARIANTS: [&str; 3] = ["ep", "ep_vib_resolved", "ep_vib_averaged"];
 /// Target: spread of the cost per contact from 1k to 100k contacts.
@@ -80,8 +90,12 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
          (`FrictionModel::Simplified`, rapier's 3D default and the model stickslip runs on, and \
          `FrictionModel::Coulomb`), by a hook that does nothing (rapier never recycles hooked \
          pairs, so this is the floor of any contact modifier), and by stickslip with each law and \
-         with a normal vibration source (ratio 0.3) in either mode on the ground/trough. Every \
-         dynamic body has sleeping disabled, so every contact is active every step.\n\n\
+         with a normal vibration source (ratio 0.3) in either mode on the ground/trough. In the \
+         first seven scenes every dynamic body has sleeping disabled; the five after rapier's \
+         examples leave sleeping as the examples do, except the compound heap and the \
+         dominoes, which would sleep before they are measured. Targets (issue 27): in scenes \
+         at rest, EP ≤ 1.10× plain rapier; in active scenes, ≤ 1.25× plain rapier and ≤ \
+         1.10× the no-op hook.\n\n\
          Two timings of the same binary (`benches/benches/step_cost.rs`), both in **CPU time of the \
          stepping thread** (`CLOCK_THREAD_CPUTIME_ID`; steps are single-threaded, so on an idle \
          machine this is the wall time, and on this shared 2-core machine it leaves out the time \
@@ -101,6 +115,8 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
     );
 
     let mut worst_time: Vec<(String, f64)> = Vec::new();
+    // (scene, EP ÷ plain, EP ÷ no-op hook), paired.
+    let mut ep_time: Vec<(String, f64, f64)> = Vec::new();
     let mut floors: Vec<Floor> = Vec::new();
     let mut alloc_rows = Vec::new();
     let mut mem_rows = Vec::new();
@@ -147,7 +163,20 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
             if r.name == "noop_hook" {
                 floors.push((name.to_string(), paired_vs_base));
             }
-            let target = if is_ss && TIMED_VARIANTS.contains(&r.name) {
+            let target = if r.name == "ep" {
+                ep_time.push((name.to_string(), paired_vs_base, paired_vs_noop));
+                if is_resting(name) {
+                    let met = paired_vs_base <= REST_TARGET;
+                    format!("≤ {REST_TARGET:.2}× plain: {}", table::verdict(met))
+                } else {
+                    let met =
+                        paired_vs_base <= ACTIVE_PLAIN_TARGET && paired_vs_noop <= TIME_TARGET;
+                    format!(
+                        "≤ {ACTIVE_PLAIN_TARGET:.2}× plain, ≤ {TIME_TARGET:.2}× no-op: {}",
+                        table::verdict(met)
+                    )
+                }
+            } else if is_ss && TIMED_VARIANTS.contains(&r.name) {
                 let met = paired_vs_noop <= TIME_TARGET;
                 worst_time.push((format!("{name} {}", r.name), paired_vs_noop));
                 format!("≤ {TIME_TARGET:.2}× no-op: {}", table::verdict(met))
@@ -270,21 +299,21 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
         }
     }
 
-    // Targets: step time over the floor.
-    for (what, r) in &worst_time {
-        if what.ends_with(" ep") {
-            let scene = what.trim_end_matches(" ep");
-            // Stacks: issue 20's target (a tower's contacts all hold, each a law step).
-            let target = if scene.starts_with("towers_") {
-                STACK_TIME_TARGET
-            } else {
-                TIME_TARGET
-            };
+    // Targets: step time against plain rapier (and, where contacts are active, the floor).
+    for (scene, plain, noop) in &ep_time {
+        if is_resting(scene) {
             summary.add(
-                format!("step time, EP, `{scene}`"),
-                &format!("≤ {target}× no-op hook"),
-                ratio(*r),
-                *r <= target,
+                format!("step time, EP, `{scene}` (at rest)"),
+                &format!("≤ {REST_TARGET}× plain rapier"),
+                format!("{} plain ({} no-op)", ratio(*plain), ratio(*noop)),
+                *plain <= REST_TARGET,
+            );
+        } else {
+            summary.add(
+                format!("step time, EP, `{scene}` (active)"),
+                &format!("≤ {ACTIVE_PLAIN_TARGET}× plain rapier, ≤ {TIME_TARGET}× no-op hook"),
+                format!("{} plain, {} no-op", ratio(*plain), ratio(*noop)),
+                *plain <= ACTIVE_PLAIN_TARGET && *noop <= TIME_TARGET,
             );
         }
     }
@@ -295,7 +324,7 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
     {
         summary.add(
             "step time, EP with vibration (either mode), worst scene",
-            "≤ 1.05× no-op hook",
+            &format!("≤ {TIME_TARGET}× no-op hook"),
             format!("{} (`{what}`)", ratio(*r)),
             *r <= TIME_TARGET,
         );
