@@ -35,4 +35,4 @@ cargo test --workspace
 # and scenario files as bevy_rapier entities (`scenario`), their tests and doc tests, headless
 # (the windowed examples are built and run by scripts/bevy_screenshot.sh in .ci/run).
 cargo test -p stickslip-bevy --features debug,scenario
-cargo test -p stickslip --features parallel --test rapier_many_contacts --test rapier_popov --test rapier_snapshot --test rapier_drive --test shared_world --test rapier_recycling
+cargo test -p stickslip --features parallel --test rapier_many_contacts --test rapier_popov --test rapier_snapshot --test rapier_drive --test shared_world --test rapier_recycling --test rapier_load_jump

@@ -5,7 +5,7 @@
 //! box with every contact hooked every step (rapier's `contact_recycling` off), for masses
 //! over four decades and two time steps — at μ_ba (EP, static above kinetic), holding without
 //! more than plain rapier (+ g_ba) after a jump to 0.6 μ_ba, moving as the hooked box after a jump to
-//! 0.9 μ_ba, sliding at g (sin θ − μ_k cos θ) after a jump to 1.2 μ_ba. A world saved while
+//! 0.9 μ_ba (both hold: `tests/rapier_load_jump.rs`), sliding at g (sin θ − μ_k cos θ) after a jump to 1.2 μ_ba. A world saved while
 //! contacts are recycled, and piles on a heightfield and on a compound ground (composite
 //! contact patches, recycled or not), resume bit for bit.
 

@@ -43,6 +43,14 @@
 //! rapier lets a box put down on a slope slip 10–100 µm there; an EP law with g_ba of a few
 //! µm would take it for break-away and, with μ_k < μ_s, slide off (`tests/ordinary_grounds.rs`).
 //!
+//! **A load that jumps.** The first solve under a load that jumped starts from the last
+//! solve's friction and touches the limit before it converges; the solves after it brake the
+//! slip that let through, at the limit. A contact that held gives at its capacity while that
+//! slip slows (see `gives`), reported stick-slip: a box on a slope jumped to 0.95 of
+//! break-away holds as plain rapier's does, where the law took the slip for break-away and,
+//! with μ_k < μ_s, slid off (`tests/rapier_load_jump.rs`). A load above the capacity makes
+//! the slip grow, and the law takes it.
+//!
 //! **Tried and dropped** (measured in `tests/ordinary_*.rs`): stick anchors — material points
 //! fixed in each collider at the moment a contact stuck, their separation corrected through
 //! the target velocity. A rolling body's material points leave the contact (after a quarter
@@ -64,7 +72,7 @@ use stickslip_core::vec2::{self, Vec2};
 
 /// Relative margin below the imposed limit within which the solver's friction counts as
 /// saturated (the impulses are f32).
-const SATURATION: f64 = 1e-3;
+pub(crate) const SATURATION: f64 = 1e-3;
 
 /// Beyond these a contact's inputs are garbage for an f32 solver, not physics: a force whose
 /// friction share overflows f32, a slip faster than anything rapier integrates meaningfully.
@@ -77,6 +85,15 @@ const WARM: f64 = 0.9;
 /// Steps a contact takes to form after a cold solve: the cold one, and the one that stops
 /// the slip it let through.
 const FORMING_STEPS: u8 = 2;
+
+/// `ContactRecord::forming` of a contact giving under a jump in load (see `step_contact`).
+pub(crate) const GIVING: u8 = 3;
+/// Share of the limit below which the friction a held contact carried makes a saturated
+/// solve after it a jump in load (see `step_contact`).
+const JUMP_SHARE: f64 = 0.9;
+/// Margin on the slip one step of the limit's impulse gives the bodies' masses (their
+/// rotation makes the contact's effective mass smaller).
+const GIVE_MARGIN: f64 = 2.0;
 
 /// Relative margin by which a directed friction's target velocity outruns what the step's
 /// friction impulse can reach (covers the rotational part of the effective mass).
@@ -128,6 +145,64 @@ pub(crate) struct ContactOutput {
     pub target: Vec2,
     /// Whether the contact holds (the solver's rigid friction row is the law's sticking).
     pub holding: bool,
+}
+
+/// The slip the law integrates this step. rapier moves the bodies with the velocity *after*
+/// this step's solve, so the slip this step makes is ġ_{k+1} dt. While the slip accelerates
+/// (break-away), extrapolate it, ġ_{k+1} ≈ ġ_k + (|ġ_k| − |ġ_{k−1}|) along ġ_k, at most
+/// doubled; otherwise ġ_k: the law is then not one step behind the motion it resists.
+fn slip_ahead(rec: &ContactRecord, slip: Vec2, dt: f64) -> Vec2 {
+    let speed = vec2::norm(slip);
+    let growth = (speed - rec.slip_speed as f64).clamp(0.0, speed);
+    let ahead = if speed > 0.0 {
+        1.0 + growth / speed
+    } else {
+        1.0
+    };
+    vec2::scale(slip, dt * ahead)
+}
+
+/// Whether a contact gives at its capacity this step instead of yielding: its solve
+/// saturated under a load that jumped, and the slip is the solver braking its own lag.
+///
+/// The first solve under a new load starts from the last one's friction and touches the
+/// limit before it has converged; the bodies keep the velocity that let through, and the
+/// solves after it brake that slip at the limit (plain rapier's box slips 0.3–0.5 mm after a
+/// jump to 0.95 of break-away at 60 Hz, then holds: `tests/rapier_load_jump.rs`). An elastic
+/// law with g_ba of microns, or a rigid one, would take that slip for break-away and, with
+/// μ_k < μ_s, slide off. A load above the capacity makes the slip grow instead. So a contact
+/// the law holds (sticking) gives while its slip
+/// - saturates the solve, is faster than nothing and no faster than one step of the limit's
+///   impulse moves the bodies (an impact's slip is the law's);
+/// - started from a hold that carried well inside the limit under a normal force that did
+///   not drop (a load rising over steps is resolved by the solver as it comes; an unloading
+///   contact saturates without any jump), or shrinks from the last step's (a slip the law's
+///   elastic range took at first, or a give going on).
+fn gives(rec: &ContactRecord, input: &ContactInput) -> bool {
+    let limit = rec.limit as f64;
+    let (f_n, dt) = (input.normal_force, input.dt);
+    let speed = vec2::norm(input.slip);
+    if !(limit > 0.0
+        && vec2::norm(input.measured_mu) >= (1.0 - SATURATION) * limit
+        && speed > 0.0
+        && speed
+            <= GIVE_MARGIN * limit * f_n.min(rec.mean_normal_force as f64) * dt * input.inv_mass)
+    {
+        return false;
+    }
+    let shrinking = speed < rec.slip_speed as f64;
+    if rec.forming == GIVING {
+        shrinking
+    } else if rec.regime != regime_code(Regime::Sticking) {
+        false
+    } else if rec.slip_speed == 0.0 {
+        // The friction it carried was well inside the limit, under a normal force that did
+        // not drop (a contact unloading, lifting off, saturates without any jump).
+        (rec.force.length() as f64) < JUMP_SHARE * limit * f_n
+            && f_n >= JUMP_SHARE * rec.mean_normal_force as f64
+    } else {
+        shrinking
+    }
 }
 
 /// One step of one contact patch: updates `rec` and returns what the solver gets.
@@ -200,14 +275,10 @@ pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> Con
         // take it for break-away and slide off at μ_k. The contact holds at its capacity, its
         // state seeded with the friction it carried; only a slip under a limit the law set
         // counts.
-        let landing = rec.forming > 0;
         // A slipping contact's friction is the law's sliding level whatever the warm start.
         let was_holding = rec.slip_speed == 0.0;
-        rec.forming = if was_holding && input.warm_start < WARM {
-            FORMING_STEPS
-        } else {
-            rec.forming.saturating_sub(1)
-        };
+        let giving_before = rec.forming == GIVING;
+        let forming = rec.forming > 0 && !giving_before;
         let first_load = !(rec.mean_normal_force > 0.0);
         // Mean normal force for the tangential stiffness: filtered, seeded at first load.
         let f_mean = if !first_load {
@@ -216,6 +287,19 @@ pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> Con
             rec.mean_normal_force as f64 + w * (f_n - rec.mean_normal_force as f64)
         } else {
             f_n
+        };
+        // Not under a vibration source: its load changes by design, and the law resolves
+        // what that does to the contact.
+        let give = !forming && can_stick && source.is_none() && gives(rec, input);
+        let landing = forming || give;
+        rec.forming = if give {
+            GIVING
+        } else if was_holding && input.warm_start < WARM {
+            FORMING_STEPS
+        } else if giving_before {
+            0
+        } else {
+            rec.forming.saturating_sub(1)
         };
         rec.mean_normal_force = f_mean as f32;
         let vib = source.map_or(1.0, |s| normal_factor(s, f_n, t_mid));
@@ -255,17 +339,7 @@ pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> Con
         let out = if holding {
             law.step(&mut state, &step_input([0.0; 2]))
         } else {
-            // rapier moves the bodies with the velocity *after* this step's solve, so the slip
-            // this step makes is ġ_{k+1} dt. While the slip accelerates (break-away),
-            // extrapolate it, ġ_{k+1} ≈ ġ_k + (|ġ_k| − |ġ_{k−1}|) along ġ_k, at most doubled;
-            // otherwise ġ_k: the law is then not one step behind the motion it resists.
-            let growth = (speed - rec.slip_speed as f64).clamp(0.0, speed);
-            let ahead = if speed > 0.0 {
-                1.0 + growth / speed
-            } else {
-                1.0
-            };
-            let g = vec2::scale(slip, dt * ahead);
+            let g = slip_ahead(rec, slip, dt);
             match compliant {
                 Some((s, k_t)) if k_t > 0.0 && k_t.is_finite() => {
                     let a0 = in_plane_force(s, f_mean, basis, rel, time);
@@ -281,7 +355,7 @@ pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> Con
         };
         rec.force = basis.lift(state.force);
         rec.slide = state.slide as f32;
-        rec.regime = regime_code(if holding && out.regime == Regime::Sliding {
+        rec.regime = regime_code(if holding && (give || out.regime == Regime::Sliding) {
             Regime::StickSlip
         } else {
             out.regime
@@ -334,7 +408,12 @@ pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> Con
     }
     let limit = limit.max(0.0);
     rec.limit = limit as f32;
-    rec.slip_speed = if holding { 0.0 } else { speed as f32 };
+    // A giving contact keeps its slip speed: the next step compares against it.
+    rec.slip_speed = if holding && rec.forming != GIVING {
+        0.0
+    } else {
+        speed as f32
+    };
     ContactOutput {
         limit,
         target,

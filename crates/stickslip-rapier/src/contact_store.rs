@@ -83,7 +83,8 @@ pub(crate) struct ContactRecord {
     /// Regime code (see `Regime`; `REGIME_RESET`), 255 until the law has run.
     pub regime: u8,
     /// Steps left (0–2) in which the solver is still forming the contact after a solve
-    /// that started cold (see `contact_step`).
+    /// that started cold, or `GIVING` (3) while it gives under a jump in load (see
+    /// `contact_step`).
     pub forming: u8,
     /// rapier 0.35 only: the warm-start impulse the manifold's points carried into the last
     /// solve (summed), which 0.35 leaves in the impulse it reports (see `rapier_compat`).

@@ -14,7 +14,8 @@
 //! A contact is quiet when the hook held it (the solver's friction stayed below the limit),
 //! it is not forming, its law can stick (Regul creeps: never quiet), it carries a load, no
 //! vibration source acts on either collider, no surface moves under it (no target velocity),
-//! and the friction the last solve needed is below [`QUIET_SHARE`] of the limit. For such a
+//! and the friction the last solve needed is below [`QUIET_SHARE`] of the limit (the
+//! solver held it: a share that only misses saturation by the solver's f32 margin). For such a
 //! contact the hook writes the same two things every step: the law's capacity as the friction
 //! limit, and no target velocity; its record only takes the held force and the mean normal
 //! force back from the solve. A recycled pair keeps exactly what the hook last wrote, and the
@@ -27,10 +28,14 @@
 //! ## Hooked again in time
 //! A collider's flag goes back on (its pairs get a full, hooked update in the very next step)
 //! when, after a step, one of its pairs that would not be hooked:
-//! - needed [`QUIET_SHARE`] of its limit or more (a load nearing break-away), or lost its load.
-//!   A load that jumps to saturation within one step is seen after that step — when the hook
-//!   would have seen it too: a hooked contact also learns of a saturated solve only at the
-//!   next step, from the same impulses;
+//! - needed [`QUIET_SHARE`] of its limit or more (the solve saturated), or lost its load. A
+//!   load that rises to saturation, slowly or within one step, is seen after that step — when
+//!   the hook would have seen it too: a hooked contact also learns of a saturated solve only
+//!   at the next step, from the same impulses. Keeping contacts hooked earlier, at a margin
+//!   below the limit, is what made a loaded box creep on a mesh: every hooked step is a full
+//!   update, and rapier's re-picked patch points start a solve with less warm start, which
+//!   slips (0.25–0.32 mm in 10 s at 0.95 of break-away on a mesh, heightfield or compound,
+//!   against none in plain rapier; `tests/ordinary_grounds.rs`);
 //! - carries a manifold the hook did not write (rapier ran a full update without the hook: a
 //!   new contact patch, a collider the user changed): that one step had rapier's friction;
 //! - has nothing touching yet and a counterpart that moves (a contact may form);
@@ -57,8 +62,9 @@ use crate::modifier::StickSlip;
 use rapier3d::prelude::*;
 use stickslip_core::law::Regime;
 
-/// Share of the friction limit below which a held contact counts as well inside it.
-pub(crate) const QUIET_SHARE: f64 = 0.75;
+/// Share of the friction limit below which a held contact is quiet: the solver held it (the
+/// saturation margin of `contact_step`).
+pub(crate) const QUIET_SHARE: f64 = 1.0 - crate::contact_step::SATURATION;
 /// Share of the recycle window a quiet body may drift (translation, plus the rotation's chord
 /// at the collider's reach) before its contacts are hooked again.
 pub(crate) const DRIFT_SHARE: f32 = 0.25;

@@ -305,7 +305,8 @@ struct RecordSnapshot {
     /// Parity of the step that last touched it.
     touched_odd: bool,
     regime: u8,
-    /// Steps left in which the contact is still forming (0–2).
+    /// Steps left in which the contact is still forming (0–2), or 3 while it gives under a
+    /// jump in load.
     forming: u8,
     /// The warm start of the last solve (kept by rapier 0.35 builds only; 0 otherwise).
     #[serde(default)]
@@ -357,10 +358,13 @@ impl RecordSnapshot {
                 "negative friction limit, slip speed or mean normal force",
             ));
         }
-        if self.forming > 2 {
+        if self.forming > crate::contact_step::GIVING {
             return Err(invalid(
                 "contact state",
-                format!("forming for {} steps (at most 2)", self.forming),
+                format!(
+                    "forming state {} (steps left 0–2, or 3: giving)",
+                    self.forming
+                ),
             ));
         }
         if !matches!(
