@@ -353,7 +353,13 @@ pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> Con
                 _ => law.step(&mut state, &step_input(g)),
             }
         };
-        rec.force = basis.lift(state.force);
+        // A memoryless law keeps no spring: a hold remembers the friction the constraint
+        // carried instead (a jump in load is told by it, see `gives`).
+        rec.force = basis.lift(if holding && law.is_memoryless() {
+            measured
+        } else {
+            state.force
+        });
         rec.slide = state.slide as f32;
         rec.regime = regime_code(if holding && (give || out.regime == Regime::Sliding) {
             Regime::StickSlip
