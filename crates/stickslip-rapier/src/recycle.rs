@@ -89,11 +89,11 @@ pub(crate) struct Recycling {
     pub window: f32,
     /// Scratch: the quiet set being decided (kept to reuse its memory).
     next: ColliderBits,
-    /// Scratch: stickslip-flagged colliders whose body is fixed or asleep (or who have none),
+    /// Scratch: candidates to go quiet whose body is fixed or asleep (or who have none),
     /// found once per step instead of once per pair.
     still: ColliderBits,
-    /// Scratch: stickslip-flagged colliders that moved more than [`MOTION_SHARE`] of the
-    /// window in the step, found once per step instead of once per pair.
+    /// Scratch: candidates to go quiet that moved more than [`MOTION_SHARE`] of the window in
+    /// the step, found once per step instead of once per pair.
     moving: ColliderBits,
 }
 
@@ -270,25 +270,24 @@ impl<H> StickSlip<H> {
             let Some((c, h)) = colliders.get_unknown_gen(i) else {
                 continue;
             };
+            // Only candidates need their motion: the pairs of the others stay hooked.
+            if !self.attached.contains(h)
+                || self.recycling.active.contains(h)
+                || self.vibrations.get(h).is_some()
+            {
+                continue;
+            }
             let body = c.parent().and_then(|b| bodies.get(b));
             if body.is_none_or(|b| b.is_fixed() || b.is_sleeping()) {
                 still.set(h, true);
-                if self.attached.contains(h)
-                    && !self.recycling.active.contains(h)
-                    && self.vibrations.get(h).is_none()
-                {
-                    next.set(h, true);
-                }
+                next.set(h, true);
                 continue;
             }
             let reach = reach_of(&self.recycling.poses, bodies, h, c);
-            if !(step_motion(bodies, c, reach, dt as f32) <= step_limit) {
-                moving.set(h, true);
-            } else if self.attached.contains(h)
-                && !self.recycling.active.contains(h)
-                && self.vibrations.get(h).is_none()
-            {
+            if step_motion(bodies, c, reach, dt as f32) <= step_limit {
                 next.set(h, true);
+            } else {
+                moving.set(h, true);
             }
         }
         // 2. Every pair of stickslip's that will not be hooked: its manifolds must be quiet.
@@ -323,57 +322,63 @@ impl<H> StickSlip<H> {
             {
                 continue;
             }
-            let quiet = if pair.has_any_active_contact() {
-                let patches = clustering
-                    && [c1, c2].into_iter().any(|h| {
-                        colliders
-                            .get(h)
-                            .is_some_and(|c| crate::hook::is_composite(c.shape()))
-                    });
-                let mut all = true;
-                for m in pair.solver_manifolds() {
-                    if m.data.solver_contacts.is_empty() {
-                        continue;
+            // One pass over the pair's manifolds: the touching ones must be quiet.
+            let (mut touching, mut all) = (false, true);
+            let mut patches = None;
+            for m in pair.solver_manifolds() {
+                if m.data.solver_contacts.is_empty() {
+                    continue;
+                }
+                touching = true;
+                let n = m.data.normal;
+                let measured = self.store.update(m.data.user_data, c1, c2, mark, |rec| {
+                    let meas = measure(
+                        m,
+                        &m.data.solver_contacts,
+                        dt,
+                        crate::rapier_compat::warm_before(rec),
+                    );
+                    let f_n = meas.normal_force;
+                    let tangential = meas.mu - n * n.dot(meas.mu);
+                    let ok = rec.limit.to_bits() == m.data.friction.to_bits()
+                        && rec.regime == regime_code(Regime::Sticking)
+                        && rec.forming == 0
+                        && rec.limit > 0.0
+                        && f_n > 0.0
+                        && (tangential.length() as f64) < QUIET_SHARE * rec.limit as f64;
+                    if ok {
+                        // What the hook does to a held contact: the held force and the
+                        // mean normal force from the solve.
+                        crate::rapier_compat::remember_warm_start(rec, meas.warm_start_impulse);
+                        rec.force = tangential * f_n as f32;
+                        let w = (dt / stiffness_time).min(1.0);
+                        let mean = rec.mean_normal_force as f64;
+                        rec.mean_normal_force = (mean + w * (f_n - mean)) as f32;
                     }
-                    let n = m.data.normal;
-                    let measured = self.store.update(m.data.user_data, c1, c2, mark, |rec| {
-                        let meas = measure(
-                            m,
-                            &m.data.solver_contacts,
-                            dt,
-                            crate::rapier_compat::warm_before(rec),
-                        );
-                        let f_n = meas.normal_force;
-                        let tangential = meas.mu - n * n.dot(meas.mu);
-                        let ok = rec.limit.to_bits() == m.data.friction.to_bits()
-                            && rec.regime == regime_code(Regime::Sticking)
-                            && rec.forming == 0
-                            && rec.limit > 0.0
-                            && f_n > 0.0
-                            && (tangential.length() as f64) < QUIET_SHARE * rec.limit as f64;
-                        if ok {
-                            // What the hook does to a held contact: the held force and the
-                            // mean normal force from the solve.
-                            crate::rapier_compat::remember_warm_start(rec, meas.warm_start_impulse);
-                            rec.force = tangential * f_n as f32;
-                            let w = (dt / stiffness_time).min(1.0);
-                            let mean = rec.mean_normal_force as f64;
-                            rec.mean_normal_force = (mean + w * (f_n - mean)) as f32;
+                    (ok, meas)
+                });
+                match measured {
+                    Some((true, meas)) => {
+                        // Composite patches keep their measurement for the next hooked step.
+                        let composite = *patches.get_or_insert_with(|| {
+                            clustering
+                                && [c1, c2].into_iter().any(|h| {
+                                    colliders
+                                        .get(h)
+                                        .is_some_and(|c| crate::hook::is_composite(c.shape()))
+                                })
+                        });
+                        if composite {
+                            self.patches_measured.insert(m.data.user_data, meas);
                         }
-                        (ok, meas)
-                    });
-                    match measured {
-                        Some((true, meas)) => {
-                            if patches {
-                                self.patches_measured.insert(m.data.user_data, meas);
-                            }
-                        }
-                        _ => {
-                            all = false;
-                            break;
-                        }
+                    }
+                    _ => {
+                        all = false;
+                        break;
                     }
                 }
+            }
+            let quiet = if touching {
                 all
             } else {
                 // Nothing touches yet: a moving counterpart may make a contact rapier would
