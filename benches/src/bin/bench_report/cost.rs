@@ -251,8 +251,12 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
             num(ep_extra, 3),
         ]);
 
-        // Memory: live heap of the EP world minus the no-op-hook world.
-        if let (Some(ep), Some(nh)) = (find("ep"), noop) {
+        // Memory: live heap of the EP world minus plain rapier's in static scenes (both
+        // recycle resting pairs, and rapier's recycling keeps state the no-op world, which
+        // never recycles, does not), minus the no-op-hook world's elsewhere.
+        let is_static = name.starts_with("plane_") || name.starts_with("pile_");
+        let heap_base = if is_static { base } else { noop };
+        if let (Some(ep), Some(nh)) = (find("ep"), heap_base) {
             let extra = ep.f("live_heap_bytes") - nh.f("live_heap_bytes");
             let manifolds = ep.f("manifolds");
             let points = ep.f("points");
@@ -420,7 +424,9 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
          The slot packs the record: f32 law state, the colliders by arena index, \
          the last slip speed as a bfloat16, and lock, liveness, sweep parity, regime and \
          generation in one 16-bit word. Measured besides: the live heap of the EP world minus \
-         the no-op-hook world of the same scene (both built and settled the same way), which \
+         plain rapier's world of the same scene in the static scenes (`plane`, `pile`: both \
+         recycle their resting pairs), the no-op-hook world's in the others (both built and \
+         settled the same way), which \
          adds the slot array's spare capacity (it grows by 1/16 and shrinks back after churn), \
          the key map (at steady state only rapier's merged cluster manifolds, whose \
          `user_data` rapier resets), the free list, and the hook-flag bit set. Per-contact \
@@ -461,7 +467,7 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
     );
     summary.add(
         "all stickslip heap per active contact (slots, spare capacity, key map, free list, \
-         flags): live heap EP − no-op, static scenes",
+         flags): live heap EP − plain rapier, static scenes",
         "≤ 64 B",
         format!("{} B per active manifold, worst scene", num(worst_bytes, 3)),
         worst_bytes <= BYTES_TARGET,

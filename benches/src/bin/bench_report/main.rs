@@ -80,6 +80,22 @@ fn command_output(cmd: &str, args: &[&str]) -> Option<String> {
 fn locked_version(package: &str) -> String {
     let lock = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../Cargo.lock"))
         .unwrap_or_default();
+    // With several versions locked (rapier3d 0.36 and bevy_rapier's 0.35), the one this
+    // package depends on is named with its version in its own dependency list.
+    let own = lock
+        .split("[[package]]")
+        .find(|block| block.contains("name = \"stickslip-benches\""))
+        .and_then(|block| {
+            block.lines().find_map(|l| {
+                l.trim()
+                    .trim_matches(|c| c == '"' || c == ',')
+                    .strip_prefix(&format!("{package} "))
+                    .map(str::to_string)
+            })
+        });
+    if let Some(v) = own {
+        return v;
+    }
     let mut lines = lock.lines();
     while let Some(l) = lines.next() {
         if l == format!("name = \"{package}\"")
