@@ -3,8 +3,9 @@
 //! springs, force ramps) act on them. Without a file it opens the CLI's built-in scenario.
 //!
 //! Dynamic bodies are coloured by the regime of their contacts (green sticking, orange
-//! stick-slip, red sliding, white without contact); fixed bodies are grey, kinematic ones
-//! blue. The contact gizmos show each contact's friction force and normal. The HUD shows the
+//! stick-slip, red sliding, white without contact; violet in contact under rapier's own
+//! friction, for a body whose contacts no stickslip material governs); fixed bodies are grey,
+//! kinematic ones blue. The contact gizmos show each contact's friction force and normal. The HUD shows the
 //! scenario's name and description, the time, and the contacts by regime.
 //!
 //! The camera frames the moving bodies whole (their bounding boxes in the camera's field of
@@ -181,9 +182,13 @@ struct Hud;
 #[derive(Component)]
 struct Part;
 
-/// Materials of the regimes (sticking, stick-slip, sliding) and of no contact.
+/// Materials of the regimes (sticking, stick-slip, sliding), of no contact, and of contacts
+/// under rapier's own friction.
 #[derive(Resource)]
-struct Palette([Handle<StandardMaterial>; 4]);
+struct Palette([Handle<StandardMaterial>; 5]);
+
+/// Colour of a body in contact under rapier's own friction (no stickslip report).
+const RAPIER_FRICTION: Color = Color::srgb(0.62, 0.45, 0.85);
 
 fn setup(mut commands: Commands, mut materials: ResMut<Assets<StandardMaterial>>) {
     let regimes = [Regime::Sticking, Regime::StickSlip, Regime::Sliding];
@@ -193,9 +198,11 @@ fn setup(mut commands: Commands, mut materials: ResMut<Assets<StandardMaterial>>
         ..default()
     };
     commands.insert_resource(Palette(std::array::from_fn(|i| {
-        materials.add(paint(
-            regimes.get(i).map_or(Color::WHITE, |r| regime_color(*r)),
-        ))
+        materials.add(paint(match i {
+            0..=2 => regime_color(regimes[i]),
+            3 => Color::WHITE,
+            _ => RAPIER_FRICTION,
+        }))
     })));
     commands.spawn((
         DirectionalLight {
@@ -348,17 +355,27 @@ fn add_meshes(
     }
 }
 
-/// Dynamic bodies' colliders in the colour of their contacts' regime (white without contact).
+/// Dynamic bodies' colliders in the colour of their contacts' regime (white without contact,
+/// violet in contact under rapier's own friction).
 fn colour_bodies(
     contacts: Res<StickSlipContacts>,
     palette: Res<Palette>,
+    rapier: ReadRapierContext,
     mut parts: Query<(Entity, &mut MeshMaterial3d<StandardMaterial>), With<Part>>,
 ) {
+    let rapier = rapier.single().ok();
     for (e, mut material) in &mut parts {
         let i = match contacts.regime_of(e) {
             Some(Regime::Sticking) => 0,
             Some(Regime::StickSlip) => 1,
             Some(Regime::Sliding) => 2,
+            // No stickslip report: touching anything is rapier's own friction.
+            None if rapier
+                .as_ref()
+                .is_some_and(|r| r.contact_pairs_with(e).any(|p| p.has_any_active_contact())) =>
+            {
+                4
+            }
             None => 3,
         };
         if material.0 != palette.0[i] {
@@ -435,7 +452,8 @@ fn hud(
          \n\
          {bodies} bodies;  contacts  {st} sticking, {ss} stick-slip, {sl} sliding;  \
          friction dissipates {pw:.3} W\n\
-         bodies    green sticking, orange stick-slip, red sliding, white no contact\n\
+         bodies    green sticking, orange stick-slip, red sliding, white no contact, \
+         violet rapier's own friction\n\
          keys      Space pause  S slow motion  R reload + restart  G gizmos",
         name = loaded.name,
         t = stickslip.modifier.time() - loaded.start_time,
