@@ -81,6 +81,17 @@ fn drum(
     drum
 }
 
+/// Where body `k` of a heap starts: layers of 8 × 8, `spacing` apart, the lowest at `base`,
+/// each `layer` above the last.
+fn dropped(k: usize, spacing: f32, base: f32, layer: f32) -> Vector {
+    let (i, j, l) = (k % 8, (k / 8) % 8, k / 64);
+    Vector::new(
+        (i as f32 - 3.5) * spacing,
+        base + l as f32 * layer,
+        (j as f32 - 3.5) * spacing,
+    )
+}
+
 /// Boxes, balls and capsules (in turn) dropped in layers of 8 × 8 over a 40 m heightfield of
 /// gentle waves (50 × 50 cells).
 fn heightfield(
@@ -103,12 +114,7 @@ fn heightfield(
     );
     hooked.push(ground);
     for k in 0..bodies {
-        let (i, j, l) = (k % 8, (k / 8) % 8, k / 64);
-        let at = Vector::new(
-            (i as f32 - 3.5) * 1.2,
-            2.0 + l as f32 * 1.2,
-            (j as f32 - 3.5) * 1.2,
-        );
+        let at = dropped(k, 1.2, 2.0, 1.2);
         let shape = match k % 3 {
             0 => ColliderBuilder::cuboid(0.3, 0.3, 0.3),
             1 => ColliderBuilder::ball(0.3),
@@ -139,12 +145,7 @@ fn compounds(
     );
     hooked.push(ground);
     for k in 0..bodies {
-        let (i, j, l) = (k % 8, (k / 8) % 8, k / 64);
-        let at = Vector::new(
-            (i as f32 - 3.5) * 1.5,
-            0.5 + l as f32 * 1.0,
-            (j as f32 - 3.5) * 1.5,
-        );
+        let at = dropped(k, 1.5, 0.5, 1.0);
         let parts = vec![
             (Pose::IDENTITY, SharedShape::cuboid(0.5, 0.1, 0.25)),
             (
