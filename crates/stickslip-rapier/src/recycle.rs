@@ -78,7 +78,7 @@ pub(crate) struct Recycling {
     pub quiet: ColliderBits,
     /// Where each quiet collider's body (or the collider, without one) was when its flag
     /// went off, and the collider's reach from that pose's origin (m).
-    pub poses: ColliderMap<(Pose, f32)>,
+    pub poses: ColliderMap<QuietPose>,
     /// Colliders a hooked manifold found not quiet during the step (any thread).
     pub active: AtomicColliderBits,
     /// Colliders to hook again at the next `begin_step` (a material or source changed).
@@ -101,6 +101,36 @@ impl Recycling {
     /// Colliders whose contacts must be hooked at the next step.
     pub fn wake(&mut self, collider: ColliderHandle) {
         self.wake.set(collider, true);
+    }
+}
+
+/// Where a quiet collider's body (or the collider, without one) was when its flag went off,
+/// and the collider's reach from that pose's origin (m): 32 bytes as plain floats, where a
+/// `Pose` with its SIMD alignment made the map's slot 80.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct QuietPose {
+    pub translation: [f32; 3],
+    /// Unit quaternion, x y z w.
+    pub rotation: [f32; 4],
+    pub reach: f32,
+}
+
+impl QuietPose {
+    pub fn new(pose: &Pose, reach: f32) -> Self {
+        let q = pose.rotation;
+        QuietPose {
+            translation: pose.translation.to_array(),
+            rotation: [q.x, q.y, q.z, q.w],
+            reach,
+        }
+    }
+
+    pub fn pose(&self) -> Pose {
+        let [x, y, z, w] = self.rotation;
+        Pose::from_parts(
+            Vector::from_array(self.translation),
+            Rotation::from_xyzw(x, y, z, w),
+        )
     }
 }
 
@@ -128,13 +158,13 @@ fn pose_of(bodies: &RigidBodySet, collider: &Collider) -> Pose {
 /// offset makes rapier run an unhooked full update, which hooks the collider again), found
 /// from its shape otherwise.
 fn reach_of(
-    poses: &ColliderMap<(Pose, f32)>,
+    poses: &ColliderMap<QuietPose>,
     bodies: &RigidBodySet,
     h: ColliderHandle,
     c: &Collider,
 ) -> f32 {
     match poses.get(h) {
-        Some((_, reach)) => *reach,
+        Some(q) => q.reach,
         None => anchor(bodies, c).1,
     }
 }
@@ -219,9 +249,9 @@ impl<H> StickSlip<H> {
                 continue;
             };
             // Drifted, or given a velocity (by the user, between steps) that leaves the window.
-            let moved = r.poses.get(h).is_none_or(|(pose, reach)| {
+            let moved = r.poses.get(h).is_none_or(|q| {
                 let now = pose_of(bodies, c);
-                !(drift(pose, &now, *reach) + step_motion(bodies, c, *reach, dt) <= limit)
+                !(drift(&q.pose(), &now, q.reach) + step_motion(bodies, c, q.reach, dt) <= limit)
             });
             if r.wake_all || r.wake.contains(h) || moved || !(r.window > 0.0) {
                 woken.set(h, true);
@@ -427,7 +457,8 @@ impl<H> StickSlip<H> {
             if let Some((c, h)) = colliders.get_unknown_gen(i)
                 && !r.quiet.contains(h)
             {
-                r.poses.insert(h, anchor(bodies, c));
+                let (pose, reach) = anchor(bodies, c);
+                r.poses.insert(h, QuietPose::new(&pose, reach));
             }
         }
         r.next = std::mem::replace(&mut r.quiet, next);

@@ -800,14 +800,11 @@ impl<H> StickSlip<H> {
                 .poses
                 .iter()
                 .filter(|(h, _)| self.recycling.quiet.contains(*h))
-                .map(|(h, (pose, reach))| {
-                    let q = pose.rotation;
-                    QuietEntry {
-                        collider: h.into(),
-                        translation: pose.translation.to_array(),
-                        rotation: [q.x, q.y, q.z, q.w],
-                        reach: *reach,
-                    }
+                .map(|(h, q)| QuietEntry {
+                    collider: h.into(),
+                    translation: q.translation,
+                    rotation: q.rotation,
+                    reach: q.reach,
                 })
                 .collect(),
             wake: self.recycling.wake.indices().collect(),
@@ -925,7 +922,6 @@ impl<H> StickSlip<H> {
                     "not in increasing collider order",
                 ));
             }
-            let [x, y, z, w] = q.rotation;
             let finite = q
                 .translation
                 .iter()
@@ -939,11 +935,14 @@ impl<H> StickSlip<H> {
             if colliders.contains(h) && m.flagged.contains(h) && m.attached.contains(h) {
                 m.recycling.quiet.set(h, true);
                 m.recycling.active.cover(h);
-                let pose = Pose::from_parts(
-                    Vector::from_array(q.translation),
-                    Rotation::from_xyzw(x, y, z, w),
+                m.recycling.poses.insert(
+                    h,
+                    crate::recycle::QuietPose {
+                        translation: q.translation,
+                        rotation: q.rotation,
+                        reach: q.reach,
+                    },
                 );
-                m.recycling.poses.insert(h, (pose, q.reach));
             }
         }
         let attached_ids: Vec<u32> = m.attached.indices().collect();
