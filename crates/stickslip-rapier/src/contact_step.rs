@@ -178,12 +178,10 @@ fn slip_ahead(rec: &ContactRecord, slip: Vec2, dt: f64) -> Vec2 {
 ///   not drop (a load rising over steps is resolved by the solver as it comes; an unloading
 ///   contact saturates without any jump), or shrinks from the last step's (a slip the law's
 ///   elastic range took at first, or a give going on).
-fn gives(rec: &ContactRecord, input: &ContactInput) -> bool {
+fn gives(rec: &ContactRecord, input: &ContactInput, saturated: bool, speed: f64) -> bool {
     let limit = rec.limit as f64;
     let (f_n, dt) = (input.normal_force, input.dt);
-    let speed = vec2::norm(input.slip);
-    if !(limit > 0.0
-        && vec2::norm(input.measured_mu) >= (1.0 - SATURATION) * limit
+    if !(saturated
         && speed > 0.0
         && speed
             <= GIVE_MARGIN * limit * f_n.min(rec.mean_normal_force as f64) * dt * input.inv_mass)
@@ -290,7 +288,9 @@ pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> Con
         };
         // Not under a vibration source: its load changes by design, and the law resolves
         // what that does to the contact.
-        let give = !forming && can_stick && source.is_none() && gives(rec, input);
+        // The solve reached the limit the law gave it (the impulses are f32).
+        let reached = rec.limit > 0.0 && mu_meas >= (1.0 - SATURATION) * rec.limit as f64;
+        let give = !forming && can_stick && source.is_none() && gives(rec, input, reached, speed);
         let landing = forming || give;
         rec.forming = if give {
             GIVING
@@ -319,8 +319,7 @@ pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> Con
             normal_force: f_eff,
             stiffness_normal_force: f_mean,
         };
-        let saturated =
-            !landing && rec.limit > 0.0 && mu_meas >= (1.0 - SATURATION) * rec.limit as f64;
+        let saturated = !landing && reached;
         // A compliant contact under in-plane vibration cannot hold once the spring force it
         // carries, s + a(t), leaves the friction circle (Eq. 9): it slips now.
         let overloaded = compliant.is_some_and(|(s, _)| {
@@ -548,6 +547,37 @@ mod tests {
         let out = step_contact(&mut rec, &input(&law, &b, [0.1, 0.0], [1e-9, 0.0]));
         assert!(!out.holding);
         assert_eq!(out.limit, 0.5);
+    }
+
+    #[test]
+    fn a_jump_in_load_gives_while_its_slip_slows_and_yields_when_it_grows() {
+        // Held at 0.1 of a 0.5 limit, then the solve saturates with a slip one step of the
+        // limit's impulse could make: the contact gives at its capacity (stick-slip) while
+        // the slip shrinks; a slip that grows is the law's (EP, μ_k 0.3 < μ_s 0.5: it slides).
+        let b = basis();
+        let law = Law::elasto_plastic(1e5, 0.5, 0.5, Curve::constant(0.3).unwrap()).unwrap();
+        for (slips, holds) in [([2e-3, 1e-3, 5e-4], true), ([2e-3, 3e-3, 4e-3], false)] {
+            let mut rec = held(&law, [0.05, 0.0]);
+            let mut out = None;
+            for v in slips {
+                out = Some(step_contact(
+                    &mut rec,
+                    &input(&law, &b, [0.5, 0.0], [v, 0.0]),
+                ));
+            }
+            let out = out.unwrap();
+            assert_eq!(out.holding, holds, "{slips:?}");
+            if holds {
+                assert_eq!(out.limit, 0.5);
+                assert_eq!(rec.regime, regime_code(Regime::StickSlip));
+            } else {
+                assert!(out.limit < 0.5, "the law yields: {}", out.limit);
+            }
+        }
+        // An impact's slip (faster than one step of the limit's impulse) is the law's at once.
+        let mut rec = held(&law, [0.05, 0.0]);
+        let out = step_contact(&mut rec, &input(&law, &b, [0.5, 0.0], [1.0, 0.0]));
+        assert!(!out.holding);
     }
 
     #[test]
