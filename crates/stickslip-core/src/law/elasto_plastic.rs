@@ -44,15 +44,24 @@
 //! The continuous law stores E = |s⃗|²/(2 k_t) and dissipates F_n α |ġ| |μ|²/μ_ve ≥ 0, whatever
 //! α and σ are. A step integrates along its straight slip path (sliding level μ_ve of the
 //! step's speed): elastic pieces (α = 0) exactly, with the band crossing in closed form; pieces
-//! where α = 1 all along (to 1 − α ≤ 1e-6) exactly (exponential), with their dissipation in
-//! closed form; the rest with backward-Euler sub-steps (one monotone scalar equation each,
-//! Newton's method kept in its bracket), each moving the state by at most a quarter band and at
-//! most half the local relaxation length, so they lengthen where the state settles near the
-//! band's top (one step of any length stays within 5 % of the band's width of the seed's ODE,
-//! tests/ep_law_properties.rs). Backward Euler is L-stable and keeps |μ| ≤ max(|μ₀|, μ_max, μ_ve) for any c and
-//! step; its sub-step dissipates F_n [μ⃗₁·Δg⃗ − (|μ₁|² − |μ₀|²)/(2c)] =
-//! F_n [|Δμ⃗|²/(2c) + h α₁ |μ₁|²/μ_ve] ≥ 0, so every step dissipates ≥ 0 by construction and the
-//! reported dissipation is the work the step's forces do minus the change of stored energy.
+//! where α = 1 (above the band, or settled at its top to 1 − α ≤ 1e-6) exactly (exponential,
+//! up to where the state sinks back into the band), with their dissipation in closed form;
+//! the rest with sub-steps in polar form, μ⃗ = r d⃗ with cos φ = d⃗·e⃗. There the law splits into
+//! dr/ds = c (cos φ − α(r) r/μ_ve) and dφ/ds = −(c/r) sin φ: the switch acts on the radius
+//! only, and the direction turns towards the slip whatever α is. A sub-step turns the
+//! direction exactly (for the radius frozen at the sub-step's mean) and takes the radius by
+//! backward Euler (one monotone scalar equation, Newton's method kept in its bracket). Its
+//! length keeps the radius's local error h²|r''|/2 under 1 % of the band's width, moves r by
+//! at most a quarter band at its starting rate, and spans at most half a relaxation length of
+//! the switch and one of the turn. A slip that turns a sliding contact (a tumbling body, a
+//! contact that slides round a corner) is followed around the band in a few sub-steps: cut
+//! across it in Cartesian sub-steps it took dozens and, past the cap on pieces, erred by up
+//! to ten band widths. One step of any length, from any state and turn, stays within 5 % of
+//! the band's width of the seed's ODE (tests/ep_law_properties.rs). The radius's backward Euler
+//! is L-stable and keeps |μ| ≤ max(|μ₀|, μ_max, μ_ve) for any c and step; a sub-step does the
+//! work r₁ h cos φ₁ per unit normal force and dissipates
+//! F_n [h α₁ r₁²/μ_ve + (r₁ − r₀)²/(2c)] ≥ 0, so every step dissipates ≥ 0 by construction and
+//! the reported dissipation is the work the step's forces do minus the change of stored energy.
 
 use super::{FrictionLaw, FrictionState, StepInput, StepOutput, unloaded};
 use crate::error::{MAX_STIFFNESS, MIN_STIFFNESS, ParamError, coefficient, in_range, positive};
@@ -61,9 +70,21 @@ use crate::switch::{Regime, alpha, regime};
 use crate::vec2::{Vec2, add, clamp_norm, dot, norm, normalize, scale, sub};
 use serde::{Deserialize, Serialize};
 
-/// Most pieces (elastic, exponential or backward-Euler sub-steps) per step; the last
-/// backward-Euler sub-step takes whatever path is left (it is stable for any length).
+/// Most pieces (elastic, exponential or sub-steps) per step; the last sub-step takes whatever
+/// path is left (it is stable for any length).
 const MAX_PIECES: usize = 48;
+
+/// Share of the band's width a sub-step may move |μ| by, at the radial rate it starts with.
+const RADIAL_SHARE: f64 = 0.25;
+
+/// Share of the band's width a sub-step's radius may err by locally (h² |r''| / 2).
+const LOCAL_ERROR: f64 = 0.01;
+
+/// Relaxation lengths m/(c α) of the switch's pull a sub-step may span.
+const RELAXATION_SPAN: f64 = 0.5;
+
+/// Relaxation lengths r/c of the state's turn towards the slip a sub-step may span.
+const TURN_SPAN: f64 = 1.0;
 
 /// 1 − α below which the switch counts as fully sliding (α = 1) in a step's pieces: the
 /// state then errs by at most ALPHA_FLAT · μ_ve (a millionth of the sliding level).
@@ -94,18 +115,38 @@ fn flat_top(lo: f64, hi: f64) -> f64 {
     below_top(lo, hi, ALPHA_FLAT)
 }
 
+/// The unit direction `d` (with cos φ = `cos` towards the unit `e`) after turning towards
+/// `e` over `turn` = ∫ c/r ds of slip: dφ/ds = −(c/r) sin φ makes tan(φ/2) decay as
+/// e^(−turn), written without the pole of tan at φ = π (a reversed state stays reversed).
+fn turned(d: Vec2, cos: f64, e: Vec2, turn: f64) -> Vec2 {
+    let decay = (-turn).exp();
+    let (plus, minus) = (1.0 + cos, (1.0 - cos) * decay * decay);
+    let den = plus + minus;
+    if !(den > f64::MIN_POSITIVE) {
+        return d;
+    }
+    add(
+        scale(e, (plus - minus - 2.0 * decay * cos) / den),
+        scale(d, 2.0 * decay / den),
+    )
+}
+
 /// The root r ∈ [lo, hi] of the increasing g(r) = r (1 + k α(r; lo, hi)) − q, given
 /// g(lo) ≤ 0 ≤ g(hi): Newton's method on the sine blend, kept inside the shrinking bracket
-/// (bisection where a step leaves it). It starts from the root with α linearized at `near`
-/// (the sub-step's starting |μ|, a quadratic; `known` = (α, α') there if the caller has
-/// them), so about three iterations of one sine and cosine each reach 1e-13: this runs in every sub-step of a contact inside the band, where
-/// Brent's method (`roots`) needed about 13 sines.
+/// (the bracket's secant, or its bisection, where a step leaves it). It starts from the root
+/// with α linearized at `near` (the sub-step's starting |μ|, a quadratic; `known` = (α, α')
+/// there if the caller has them) and stops at steps of 1e-10 hi, far below a sub-step's own
+/// error: about three and a half iterations of one sine and cosine each. A tighter stop
+/// costs iterations for nothing: with k ≫ 1 (long sub-steps) g's round-off is about
+/// k·hi·1e-16, and a Newton step that cannot shrink below it falls back on the bracket.
+/// This runs in every sub-step of a contact inside the band, where Brent's method (`roots`)
+/// needed about 13 sines.
 fn band_radius(q: f64, k: f64, lo: f64, hi: f64, near: f64, known: Option<(f64, f64)>) -> f64 {
     let width = hi - lo;
     if !(width > 0.0) {
         return lo;
     }
-    let (mid, tol) = (0.5 * (lo + hi), 1e-13 * hi);
+    let (mid, tol) = (0.5 * (lo + hi), 1e-10 * hi);
     let (mut a, mut b) = (lo, hi);
     let blend = |r: f64| {
         let (sin, cos) = (std::f64::consts::PI * (r - mid) / width).sin_cos();
@@ -132,6 +173,8 @@ fn band_radius(q: f64, k: f64, lo: f64, hi: f64, near: f64, known: Option<(f64, 
     } else {
         r0
     };
+    // g at the bracket's ends needs no sine: α(lo) = 0, α(hi) = 1.
+    let (mut ga, mut gb) = (lo - q, hi * (1.0 + k) - q);
     for _ in 0..100 {
         let (alpha, slope) = blend(r);
         let g = r * (1.0 + k * alpha) - q;
@@ -139,13 +182,17 @@ fn band_radius(q: f64, k: f64, lo: f64, hi: f64, near: f64, known: Option<(f64, 
             return r;
         }
         if g < 0.0 {
-            a = r;
+            (a, ga) = (r, g);
         } else {
-            b = r;
+            (b, gb) = (r, g);
         }
         let mut next = r - g / (1.0 + k * (alpha + r * slope));
         if !(next > a && next < b) {
-            next = 0.5 * (a + b);
+            // Newton left the bracket (the blend's bends): the secant of the bracket.
+            next = a - ga * (b - a) / (gb - ga);
+            if !(next > a && next < b) {
+                next = 0.5 * (a + b);
+            }
         }
         if (next - r).abs() <= tol || b - a <= tol {
             return next.clamp(lo, hi);
@@ -435,8 +482,8 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
             rest -= p.used;
         }
         if rest > 0.0 {
-            // Whatever is left in one backward-Euler sub-step (stable for any length).
-            let p = self.backward_euler(mu, sigma, e, rest, c, m, w_sigma, None);
+            // Whatever is left in one sub-step (stable for any length).
+            let p = self.sub_step(mu, sigma, e, rest, c, m, w_sigma, None);
             mu = p.mu;
             sigma = p.sigma;
             dissipated += p.dissipated;
@@ -444,8 +491,8 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
         (mu, sigma, dissipated.max(0.0))
     }
 
-    /// One piece of a step: elastic up to the band, exponential where α = 1 throughout, or one
-    /// backward-Euler sub-step of at most `h_max`.
+    /// One piece of a step: elastic up to the band, exponential where α = 1, or one sub-step
+    /// (no shorter than a quarter of `h_max`).
     #[allow(clippy::too_many_arguments)]
     fn piece(
         &self,
@@ -460,8 +507,9 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
     ) -> Piece {
         let (lo, hi) = self.band(sigma, m);
         let mag = norm(mu);
-        // A state put onto the band edge by the previous piece counts as on it.
-        if mag < lo * (1.0 - 1e-12) {
+        // A state put onto the band edge by the previous piece counts as on it, unless the
+        // slip takes it inwards.
+        if mag < lo * (1.0 - 1e-12) || (mag <= lo * (1.0 + 1e-12) && dot(mu, e) < 0.0) {
             // Elastic (α = 0): exact, up to the crossing of |μ| = L. No dissipation.
             let p = dot(mu, e);
             let disc = (p * p - mag * mag + lo * lo).max(0.0);
@@ -490,41 +538,67 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
         let settled = rest >= SETTLED_PATHS * m / c
             && m >= hi
             && self.stays_sliding(mu, e, m, hi - below_top(lo, hi, ALPHA_NEAR_TOP));
-        if settled || self.stays_sliding(mu, e, m, hi - flat_top(lo, hi)) {
-            // α = 1 along the whole rest (the band only sinks as σ grows): the linear ODE's
-            // exact solution μ(s) = m e + d exp(−c s/m), and its dissipation ∫|μ|²/m ds.
+        // Above a band that stays put (α = 1) the law is linear until the state sinks back
+        // to U; a band still sinking with σ is left to the sub-steps.
+        let fixed_band = self.band(1.0, m) == (lo, hi);
+        let above = fixed_band && mag > hi * (1.0 + 1e-12);
+        if settled || above || self.stays_sliding(mu, e, m, hi - flat_top(lo, hi)) {
+            // α = 1 along the whole rest (the band only sinks as σ grows), or, from above
+            // the band, up to where the state sinks to U: the linear ODE's exact solution
+            // μ(s) = m e + d exp(−c s/m), and its dissipation ∫|μ|²/m ds.
             let kappa = c / m;
             let d = sub(mu, scale(e, m));
-            let decay = (-kappa * rest).exp();
-            let integral = m * m * rest
+            let used = if settled || !above || self.stays_sliding(mu, e, m, hi) {
+                rest
+            } else {
+                // |m e + λ d| = U at the larger root λ ∈ (0, 1) (λ = 1 is |μ| > U, λ = 0
+                // the target m e, inside): λ² |d|² + 2 λ m e·d + m² − U² = 0.
+                let (dd, p) = (dot(d, d), m * dot(e, d));
+                let disc = (p * p - dd * (m * m - hi * hi)).max(0.0).sqrt();
+                let lambda = ((disc - p) / dd).clamp(f64::MIN_POSITIVE, 1.0);
+                (-lambda.ln() / kappa).min(rest)
+            };
+            let decay = (-kappa * used).exp();
+            let integral = m * m * used
                 + 2.0 * m * dot(e, d) * (1.0 - decay) / kappa
                 + dot(d, d) * (1.0 - decay * decay) / (2.0 * kappa);
+            let at = add(scale(e, m), scale(d, decay));
             return Piece {
-                mu: add(scale(e, m), scale(d, decay)),
-                sigma: self.grow(sigma, rest, w_sigma),
-                used: rest,
+                // Put onto U where the piece ends on it, so the next one starts in the band.
+                mu: if used < rest {
+                    normalize(at).map_or(at, |u| scale(u, hi))
+                } else {
+                    at
+                },
+                sigma: self.grow(sigma, used, w_sigma),
+                used,
                 dissipated: (integral / m).max(0.0),
             };
         }
-        // A sub-step moves the state by at most a quarter of the band and spans at most half
-        // the law's local relaxation length 1/J, J = (c/m)(α + |μ| α'): in the band's steep
-        // middle that is about h_max; near its top (α' → 0, J → c/m) the state moves slowly
-        // and the sub-steps lengthen, so a slide settling onto U = μ_ve takes a dozen
-        // sub-steps, not hundreds of h_max.
+        // The sub-step's length (module docs): the radius's local error h²|r''|/2, with
+        // r'' = c² sin²φ/r − J r' and J = (c/m)(α + r α'), the radial move at the starting
+        // rate, and the relaxation lengths of the switch and the turn. On the band's slow
+        // manifold (a turning slide) the two terms of r'' cancel and the sub-steps lengthen;
+        // a state crossing the band's steep middle has |J r'| large and takes short ones.
         let width = hi - lo;
-        let (h, known) = if width > 0.0 && mag < hi {
+        let (a, slope) = if width > 0.0 && mag < hi {
             let x = std::f64::consts::PI * (mag - 0.5 * (lo + hi)) / width;
             let (sin, cos) = x.sin_cos();
-            let a = 0.5 * sin + 0.5;
-            let slope = 0.5 * std::f64::consts::PI * cos / width;
-            let rate = c * norm(sub(e, scale(mu, a / m)));
-            let stiffness = c / m * (a + mag * slope);
-            let h = (0.25 * width / rate).min(0.5 / stiffness).max(h_max);
-            (h, Some(((lo, hi), (a, slope))))
+            (0.5 * sin + 0.5, 0.5 * std::f64::consts::PI * cos / width)
         } else {
-            (h_max, None)
+            (1.0, 0.0)
         };
-        self.backward_euler(mu, sigma, e, rest.min(h), c, m, w_sigma, known)
+        let cos = (dot(mu, e) / mag).clamp(-1.0, 1.0);
+        let radial = c * (cos - a * mag / m);
+        let stiffness = c / m * (a + mag * slope);
+        let curvature = (c * c * (1.0 - cos * cos) / mag - stiffness * radial).abs();
+        let h = (RADIAL_SHARE * width / radial.abs())
+            .min((2.0 * LOCAL_ERROR * width / curvature).sqrt())
+            .min(RELAXATION_SPAN * m / (c * a))
+            .min(TURN_SPAN * mag / c)
+            .max(0.25 * h_max);
+        let known = (width > 0.0 && mag < hi).then_some(((lo, hi), (a, slope)));
+        self.sub_step(mu, sigma, e, rest.min(h), c, m, w_sigma, known)
     }
 
     /// Progress σ after `used` metres of slip past break-away.
@@ -533,6 +607,75 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
             (sigma + used / w_sigma).min(1.0)
         } else {
             0.0
+        }
+    }
+
+    /// One sub-step of length `h` (m) in polar form, μ⃗ = r d⃗ with cos φ = d⃗·e⃗. The law splits
+    /// into dr/ds = c (cos φ − α(r) r/m) and dφ/ds = −(c/r) sin φ: the switch only acts on the
+    /// radius, and the direction turns towards the slip whatever α is. The turn is taken
+    /// exactly for a radius frozen at the sub-step's mean (tan(φ/2) decays as e^(−c s/r)),
+    /// the radius by backward Euler with the turned direction's cos φ₁:
+    /// r₁ (1 + h c α(r₁)/m) = r₀ + h c cos φ₁, the scalar equation of [`band_radius`]. Its
+    /// dissipation, work r₁ h cos φ₁ less the stored energy's change, is
+    /// h α₁ r₁²/m + (r₁ − r₀)²/(2c) ≥ 0 per unit normal force. A sliding state turned by the
+    /// slip follows the band around instead of being cut across it in a straight line, so a
+    /// turn costs a few sub-steps, not dozens of quarter-band ones.
+    #[allow(clippy::too_many_arguments)]
+    fn sub_step(
+        &self,
+        mu: Vec2,
+        sigma: f64,
+        e: Vec2,
+        h: f64,
+        c: f64,
+        m: f64,
+        w_sigma: f64,
+        known: Option<((f64, f64), (f64, f64))>,
+    ) -> Piece {
+        let r0 = norm(mu);
+        if !(r0 > 0.0) {
+            return self.backward_euler(mu, sigma, e, h, c, m, w_sigma, None);
+        }
+        let d0 = scale(mu, 1.0 / r0);
+        let cos0 = dot(d0, e).clamp(-1.0, 1.0);
+        let (lo0, _) = self.band(sigma, m);
+        let sigma1 = if r0 >= lo0 * (1.0 - 1e-12) {
+            self.grow(sigma, h, w_sigma)
+        } else {
+            sigma
+        };
+        let (lo1, hi1) = self.band(sigma1, m);
+        let mut h = h;
+        let mut cos1 = dot(turned(d0, cos0, e, c * h / r0), e);
+        if r0 + h * c * cos1 < lo1 && r0 > lo1 && cos1 < 0.0 {
+            // The state sinks out of the band within the sub-step: end it on the band's edge
+            // (α = 0 there), where the exact elastic piece takes over.
+            h = (lo1 - r0) / (c * cos1);
+            cos1 = dot(turned(d0, cos0, e, c * h / r0), e);
+        }
+        let q = r0 + h * c * cos1;
+        if !(q > 0.0) {
+            // Turned through the origin: the Cartesian form has no pole there.
+            return self.backward_euler(mu, sigma, e, h, c, m, w_sigma, None);
+        }
+        let k = h * c / m;
+        let r1 = if q <= lo1 {
+            q
+        } else if q / (1.0 + k) >= hi1 {
+            q / (1.0 + k)
+        } else {
+            let known = known
+                .filter(|(band, _)| *band == (lo1, hi1))
+                .map(|(_, b)| b);
+            band_radius(q, k, lo1, hi1, r0, known)
+        };
+        let d1 = turned(d0, cos0, e, 2.0 * c * h / (r0 + r1));
+        let stored = (r1 * r1 - r0 * r0) / (2.0 * c);
+        Piece {
+            mu: scale(d1, r1),
+            sigma: sigma1,
+            used: h,
+            dissipated: (r1 * h * cos1 - stored).max(0.0),
         }
     }
 
@@ -730,7 +873,8 @@ mod tests {
                 }
             }
         }
-        assert!(worst < 1e-11, "worst relative difference {worst:e}");
+        // The iteration stops at steps of 1e-10 hi (measured: 2.1e-10 at worst).
+        assert!(worst < 1e-9, "worst relative difference {worst:e}");
         assert_eq!(band_radius(0.5, 1.0, 0.4, 0.4, 0.4, None), 0.4);
     }
 
