@@ -7,7 +7,10 @@
 //! the app's own `ActiveHooks` component carries it: the component stays the app's (stickslip
 //! never writes it), stickslip turns the flag on in rapier's collider, and again after
 //! bevy_rapier rewrote the flags from a changed component. The app's hooks run only on pairs
-//! with a collider whose flag is the app's ([`crate::hooks::UserHooks`]).
+//! with a collider whose flag is the app's ([`crate::hooks::UserHooks`]). On an attached
+//! collider whose flag is stickslip's alone (no app flag, no `SurfaceVelocity`) the modifier
+//! owns it and turns it off while the collider's contacts are quiet, so that rapier recycles
+//! them as it does without stickslip (`StickSlip::set_user_hook_flag`).
 
 use crate::components::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
 use crate::state::StickSlipRapier;
@@ -76,13 +79,28 @@ pub(crate) fn attach(
             state.modifier.detach(colliders, old);
             release(state, colliders, entity, old);
         }
-        // The flag first: the modifier then finds it on and leaves it to us.
         claim_hook_flag(state, colliders, handle.0, hooks);
         state
             .modifier
             .attach(colliders, handle.0, friction.0.clone());
         state.attached.insert(entity, handle.0);
+        hand_flag_to_modifier(state, colliders, handle.0);
     }
+}
+
+/// Tells the modifier whose the flag of an attached collider is: stickslip's own (it then
+/// turns it off while the collider's contacts are quiet, so that rapier recycles them as it
+/// would without stickslip), or the app's (its `ActiveHooks` has the flag: the app's hooks
+/// need it on every step) or a `SurfaceVelocity`'s (kept on by this add-on).
+fn hand_flag_to_modifier(
+    state: &mut StickSlipRapier,
+    colliders: &mut ColliderSet,
+    h: ColliderHandle,
+) {
+    let app_or_surface = !state.hook_flags.contains(&h) || state.surfaces.contains_key(&h);
+    state
+        .modifier
+        .set_user_hook_flag(colliders, h, app_or_surface);
 }
 
 /// Vibration sources onto the colliders' contacts.
@@ -142,6 +160,7 @@ pub(crate) fn sync_surfaces(
             claim_hook_flag(state, colliders, h.0, hooks);
             state.surfaces.insert(h.0, v.0);
             state.surface_entities.insert(entity, h.0);
+            hand_flag_to_modifier(state, colliders, h.0);
         }
     }
 }
@@ -164,6 +183,7 @@ pub(crate) fn follow_app_hooks(
             || state.surface_entities.get(&entity) == Some(&h.0)
         {
             claim_hook_flag(state, colliders, h.0, Some(hooks));
+            hand_flag_to_modifier(state, colliders, h.0);
         }
     }
 }

@@ -377,6 +377,33 @@ impl<H> StickSlip<H> {
         }
     }
 
+    /// Says whether the `MODIFY_SOLVER_CONTACTS` flag of an attached collider is also the
+    /// user's — their own hooks need it on every step — for integrations that learn it only
+    /// after [`Self::attach`] (bevy's `ActiveHooks` component, which bevy_rapier writes into
+    /// rapier's collider whenever it changes). When it is, stickslip keeps the flag on and the
+    /// collider's pairs are never recycled; when it is not, the flag is stickslip's, which
+    /// turns it off while the collider's contacts are quiet (see the `recycle` module) and off
+    /// in [`Self::detach`]. Either way the flag is on now and the collider's pairs are hooked
+    /// in the next step. A collider that is not attached is left alone.
+    pub fn set_user_hook_flag(
+        &mut self,
+        colliders: &mut ColliderSet,
+        collider: ColliderHandle,
+        users: bool,
+    ) {
+        if !self.attached.contains(collider) {
+            return;
+        }
+        let Some(c) = colliders.get_mut(collider) else {
+            return;
+        };
+        c.set_active_hooks(c.active_hooks() | ActiveHooks::MODIFY_SOLVER_CONTACTS);
+        self.flagged.set(collider, !users);
+        self.recycling.quiet.set(collider, false);
+        self.recycling.poses.remove(collider);
+        self.recycling.active.cover(collider);
+    }
+
     /// Takes `collider` back out of stickslip: drops its material, vibration source, every
     /// contact state and report involving it, and turns its `MODIFY_SOLVER_CONTACTS` hook off
     /// again if [`Self::attach`] turned it on (a flag the user had set stays, for their own
