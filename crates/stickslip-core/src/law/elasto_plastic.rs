@@ -634,29 +634,25 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
     ) -> Piece {
         let r0 = norm(mu);
         if !(r0 > 0.0) {
-            return self.backward_euler(mu, sigma, e, h, c, m, w_sigma, None);
+            return self.backward_euler(mu, sigma, e, h, c, m, w_sigma);
         }
         let d0 = scale(mu, 1.0 / r0);
         let cos0 = dot(d0, e).clamp(-1.0, 1.0);
-        let (lo0, _) = self.band(sigma, m);
-        let sigma1 = if r0 >= lo0 * (1.0 - 1e-12) {
-            self.grow(sigma, h, w_sigma)
-        } else {
-            sigma
-        };
-        let (lo1, hi1) = self.band(sigma1, m);
-        let mut h = h;
+        let (mut h, mut sigma1) = (h, self.sigma_after(sigma, r0, h, m, w_sigma));
+        let (mut lo1, mut hi1) = self.band(sigma1, m);
         let mut cos1 = dot(turned(d0, cos0, e, c * h / r0), e);
         if r0 + h * c * cos1 < lo1 && r0 > lo1 && cos1 < 0.0 {
             // The state sinks out of the band within the sub-step: end it on the band's edge
             // (α = 0 there), where the exact elastic piece takes over.
             h = (lo1 - r0) / (c * cos1);
             cos1 = dot(turned(d0, cos0, e, c * h / r0), e);
+            sigma1 = self.sigma_after(sigma, r0, h, m, w_sigma);
+            (lo1, hi1) = self.band(sigma1, m);
         }
         let q = r0 + h * c * cos1;
         if !(q > 0.0) {
             // Turned through the origin: the Cartesian form has no pole there.
-            return self.backward_euler(mu, sigma, e, h, c, m, w_sigma, None);
+            return self.backward_euler(mu, sigma, e, h, c, m, w_sigma);
         }
         let k = h * c / m;
         let r1 = if q <= lo1 {
@@ -679,7 +675,19 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
         }
     }
 
-    /// One backward-Euler sub-step of length `h` (m).
+    /// Progress σ after a sub-step of `h` (m) from radius `r0`: it grows only on or above
+    /// the band.
+    fn sigma_after(&self, sigma: f64, r0: f64, h: f64, m: f64, w_sigma: f64) -> f64 {
+        let (lo, _) = self.band(sigma, m);
+        if r0 >= lo * (1.0 - 1e-12) {
+            self.grow(sigma, h, w_sigma)
+        } else {
+            sigma
+        }
+    }
+
+    /// One sub-step of length `h` (m) in Cartesian form, for a state at (or turned through)
+    /// the origin, where the polar form has no direction.
     #[allow(clippy::too_many_arguments)]
     fn backward_euler(
         &self,
@@ -690,16 +698,10 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
         c: f64,
         m: f64,
         w_sigma: f64,
-        known: Option<((f64, f64), (f64, f64))>,
     ) -> Piece {
         // Backward Euler: μ₁ = μ₀ + h c e − h c α₁ μ₁/m with α₁ on the band at the sub-step's
         // end; with q = μ₀ + h c e, μ₁ = q r/|q| where r (1 + h c α(r)/m) = |q|.
-        let (lo0, _) = self.band(sigma, m);
-        let sigma1 = if norm(mu) >= lo0 * (1.0 - 1e-12) {
-            self.grow(sigma, h, w_sigma)
-        } else {
-            sigma
-        };
+        let sigma1 = self.sigma_after(sigma, norm(mu), h, m, w_sigma);
         let (lo1, hi1) = self.band(sigma1, m);
         let hc = h * c;
         let q = add(mu, scale(e, hc));
@@ -711,11 +713,7 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
             let r = if r_slide >= hi1 {
                 r_slide
             } else {
-                // The blend at |μ₀| the caller computed holds if the band did not move.
-                let known = known
-                    .filter(|(band, _)| *band == (lo1, hi1))
-                    .map(|(_, b)| b);
-                band_radius(qn, hc / m, lo1, hi1, norm(mu), known)
+                band_radius(qn, hc / m, lo1, hi1, norm(mu), None)
             };
             scale(q, r / qn)
         };
