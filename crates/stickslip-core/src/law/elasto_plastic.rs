@@ -131,6 +131,14 @@ fn turned(d: Vec2, cos: f64, e: Vec2, turn: f64) -> Vec2 {
     )
 }
 
+/// The sine blend α(r) of Eq. 7 on the band [lo, hi] (lo < hi) and its slope α'(r), from
+/// one sine and cosine: α = (1 + sin x)/2, x = π (r − (lo + hi)/2)/(hi − lo).
+fn sine_blend(r: f64, lo: f64, hi: f64) -> (f64, f64) {
+    let width = hi - lo;
+    let (sin, cos) = (std::f64::consts::PI * (r - 0.5 * (lo + hi)) / width).sin_cos();
+    (0.5 * sin + 0.5, 0.5 * std::f64::consts::PI * cos / width)
+}
+
 /// The root r ∈ [lo, hi] of the increasing g(r) = r (1 + k α(r; lo, hi)) − q, given
 /// g(lo) ≤ 0 ≤ g(hi): Newton's method on the sine blend, kept inside the shrinking bracket
 /// (the bracket's secant, or its bisection, where a step leaves it). It starts from the root
@@ -148,10 +156,7 @@ fn band_radius(q: f64, k: f64, lo: f64, hi: f64, near: f64, known: Option<(f64, 
     }
     let (mid, tol) = (0.5 * (lo + hi), 1e-10 * hi);
     let (mut a, mut b) = (lo, hi);
-    let blend = |r: f64| {
-        let (sin, cos) = (std::f64::consts::PI * (r - mid) / width).sin_cos();
-        (0.5 * sin + 0.5, 0.5 * std::f64::consts::PI * cos / width)
-    };
+    let blend = |r: f64| sine_blend(r, lo, hi);
     // α ≈ α₀ + α₀' (r − r₀): k α₀' r² + (1 + k (α₀ − α₀' r₀)) r − q = 0, the positive root in
     // the form without cancellation.
     let r0 = if near.is_finite() {
@@ -582,9 +587,7 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
         // a state crossing the band's steep middle has |J r'| large and takes short ones.
         let width = hi - lo;
         let (a, slope) = if width > 0.0 && mag < hi {
-            let x = std::f64::consts::PI * (mag - 0.5 * (lo + hi)) / width;
-            let (sin, cos) = x.sin_cos();
-            (0.5 * sin + 0.5, 0.5 * std::f64::consts::PI * cos / width)
+            sine_blend(mag, lo, hi)
         } else {
             (1.0, 0.0)
         };
