@@ -24,10 +24,12 @@ pub mod block;
 #[cfg(feature = "reference-chain")]
 #[doc(hidden)]
 pub mod chain;
+pub mod contact;
 pub mod error;
 pub mod feeder;
 mod integrate;
 pub mod law;
+pub mod material;
 pub mod popov;
 pub mod sliding_curve;
 pub mod switch;
@@ -35,3 +37,4 @@ pub mod vec2;
 pub mod waveform;
 
 pub use error::ParamError;
+pub use material::FrictionMaterial;

@@ -31,7 +31,7 @@ use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Mutex, RwLock};
-use stickslip_core::law::Regime;
+use stickslip_core::contact::{ContactState, REGIME_RESET};
 
 /// What identifies a manifold across steps: the collider pair and which of its manifolds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -65,69 +65,18 @@ impl ManifoldPart {
     }
 }
 
-/// The state of one contact manifold, as the hook works on it.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// The state of one contact manifold, as the hook works on it: the kernel's state and what
+/// the adapter keeps beside it.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub(crate) struct ContactRecord {
-    /// Friction-law state s⃗ (tangential spring force, N) in world coordinates.
-    pub force: Vector,
-    /// Friction-law break-away progress σ (elasto-plastic law; 0 otherwise).
-    pub slide: f32,
-    /// The friction coefficient limit given to the solver last step (0: none yet).
-    pub limit: f32,
-    /// Slip speed seen last step (m/s; 0 while holding), to 8 significant bits.
-    pub slip_speed: f32,
+    /// The friction kernel's state of the contact.
+    pub state: ContactState,
     /// The wrapped user hook's own `user_data` for this manifold (we own the field).
     pub inner_user_data: u32,
-    /// Mean normal force (N), low-pass filtered: sets the law's tangential stiffness.
-    pub mean_normal_force: f32,
-    /// Regime code (see `Regime`; `REGIME_RESET`), 255 until the law has run.
-    pub regime: u8,
-    /// Steps left (0–2) in which the solver is still forming the contact after a solve
-    /// that started cold, or `GIVING` (3) while it gives under a jump in load (see
-    /// `contact_step`).
-    pub forming: u8,
     /// rapier 0.35 only: the warm-start impulse the manifold's points carried into the last
     /// solve (summed), which 0.35 leaves in the impulse it reports (see `rapier_compat`).
     #[cfg(rapier_035)]
     pub warm_start_impulse: f32,
-}
-
-impl Default for ContactRecord {
-    fn default() -> Self {
-        ContactRecord {
-            force: Vector::ZERO,
-            slide: 0.0,
-            limit: 0.0,
-            slip_speed: 0.0,
-            inner_user_data: 0,
-            mean_normal_force: 0.0,
-            regime: u8::MAX,
-            forming: 0,
-            #[cfg(rapier_035)]
-            warm_start_impulse: 0.0,
-        }
-    }
-}
-
-/// Regime code of a contact whose inputs were not usable this step (see `contact_step`).
-pub(crate) const REGIME_RESET: u8 = 254;
-
-/// The stored code of a regime.
-pub(crate) fn regime_code(r: Regime) -> u8 {
-    match r {
-        Regime::Sticking => 0,
-        Regime::StickSlip => 1,
-        Regime::Sliding => 2,
-    }
-}
-
-/// The regime of a stored code (reset and "not yet run" read as sticking).
-pub(crate) fn regime_of(code: u8) -> Regime {
-    match code {
-        1 => Regime::StickSlip,
-        2 => Regime::Sliding,
-        _ => Regime::Sticking,
-    }
 }
 
 /// A value rounded (towards zero) to bfloat16: what the store keeps of a slip speed.
@@ -231,36 +180,40 @@ impl Slot {
 
 fn unpack(p: &Packed, slip: u16, meta: u16) -> ContactRecord {
     ContactRecord {
-        force: Vector::from_array(p.force),
-        slide: p.slide,
-        limit: p.limit,
-        slip_speed: from_bf16(slip & !SLIP_FORMING),
+        state: ContactState {
+            force: p.force,
+            slide: p.slide,
+            limit: p.limit,
+            slip_speed: from_bf16(slip & !SLIP_FORMING),
+            mean_normal_force: p.mean_normal_force,
+            regime: unpack_regime(meta),
+            forming: u8::from(meta & FORMING != 0) | u8::from(slip & SLIP_FORMING != 0) << 1,
+        },
         inner_user_data: 0,
-        mean_normal_force: p.mean_normal_force,
-        regime: unpack_regime(meta),
-        forming: u8::from(meta & FORMING != 0) | u8::from(slip & SLIP_FORMING != 0) << 1,
         #[cfg(rapier_035)]
         warm_start_impulse: p.warm_start_impulse,
     }
 }
 
-fn pack(r: &ContactRecord, c1: u32, c2: u32) -> (Packed, u16) {
+fn pack(record: &ContactRecord, c1: u32, c2: u32) -> (Packed, u16) {
+    let r = &record.state;
     (
         Packed {
-            force: r.force.to_array(),
+            force: r.force,
             slide: r.slide,
             limit: r.limit,
             mean_normal_force: r.mean_normal_force,
             c1,
             c2,
             #[cfg(rapier_035)]
-            warm_start_impulse: r.warm_start_impulse,
+            warm_start_impulse: record.warm_start_impulse,
         },
         (to_bf16(r.slip_speed) & !SLIP_FORMING) | if r.forming & 2 != 0 { SLIP_FORMING } else { 0 },
     )
 }
 
-fn with_state(meta: u16, r: &ContactRecord) -> u16 {
+fn with_state(meta: u16, record: &ContactRecord) -> u16 {
+    let r = &record.state;
     let forming = if r.forming & 1 != 0 { FORMING } else { 0 };
     (meta & !(REGIME_MASK | FORMING)) | pack_regime(r.regime) | forming
 }
@@ -807,22 +760,25 @@ mod tests {
     #[test]
     fn packing_keeps_the_record() {
         let rec = ContactRecord {
-            force: Vector::new(1.5, -2.0, 3.25),
-            slide: 0.75,
-            limit: 0.4,
-            slip_speed: 0.5,
-            inner_user_data: 0,
-            mean_normal_force: 9.81,
-            regime: 2,
-            forming: 0,
-            #[cfg(rapier_035)]
-            warm_start_impulse: 0.0,
+            state: ContactState {
+                force: [1.5, -2.0, 3.25],
+                slide: 0.75,
+                limit: 0.4,
+                slip_speed: 0.5,
+                mean_normal_force: 9.81,
+                regime: 2,
+                forming: 0,
+            },
+            ..ContactRecord::default()
         };
         for regime in [0, 1, 2, u8::MAX, REGIME_RESET] {
             for forming in 0..=2 {
                 let rec = ContactRecord {
-                    regime,
-                    forming,
+                    state: ContactState {
+                        regime,
+                        forming,
+                        ..rec.state
+                    },
                     ..rec
                 };
                 let (p, slip) = pack(&rec, 3, 4);
@@ -919,7 +875,7 @@ mod tests {
                             // Threads walk the keys in different orders.
                             let i = (k + t * 251) % keys.len();
                             let mut ud = 0;
-                            store.with_record(&mut ud, &keys[i], 1, |r, _, _| r.slide += 1.0);
+                            store.with_record(&mut ud, &keys[i], 1, |r, _, _| r.state.slide += 1.0);
                             out[i] = ud;
                         }
                         out
@@ -937,7 +893,7 @@ mod tests {
         // does, on purpose) take turns: every update lands.
         let image = store.image();
         for l in image.slots.iter().filter_map(|s| s.live.as_ref()) {
-            assert_eq!(l.record.slide, 8.0);
+            assert_eq!(l.record.state.slide, 8.0);
         }
     }
 
@@ -947,7 +903,7 @@ mod tests {
         let mut uds = [0u32; 5];
         for (i, ud) in uds.iter_mut().enumerate() {
             store.with_record(ud, &key(i as u32, 9), 1, |r, _, _| {
-                r.slide = i as f32;
+                r.state.slide = i as f32;
                 r.inner_user_data = i as u32;
             });
         }

@@ -1,4 +1,5 @@
-//! stickslip's [`PhysicsHooks`] impl: plumbing around [`crate::contact_step::step_contact`].
+//! stickslip's [`PhysicsHooks`] impl: plumbing around the engine-free kernel's
+//! [`stickslip_core::contact::step_contact`].
 //! Per manifold it finds the contact's record, lets the wrapped hook run with its own
 //! `user_data`, gathers the step's inputs from the manifold and the bodies (normal force and
 //! measured friction of the last solve, the slip of the touching points at the centroid of the
@@ -6,17 +7,16 @@
 //! rapier keeps one friction coefficient and (by default in 3D, `FrictionModel::Simplified`)
 //! one friction constraint per manifold, so stickslip keeps one friction state per manifold.
 
-use crate::contact_step::{ContactInput, step_contact};
-use crate::contact_store::{ContactKey, ContactRecord, ManifoldPart, regime_code};
+use crate::contact_store::{ContactKey, ContactRecord, ManifoldPart};
 use crate::measure::{Measured, centroid, measure, point_velocity};
 use crate::modifier::StickSlip;
 #[cfg(rapier_035)]
 use crate::rapier_compat::RigidManifold;
 use crate::recycle::QUIET_SHARE;
-use crate::tangent::TangentBasis;
 use crate::warnings::Warning;
 use rapier3d::prelude::*;
 use std::sync::atomic::Ordering;
+use stickslip_core::contact::{ContactInput, step_contact};
 use stickslip_core::law::{Law, Regime};
 
 /// Whether a shape reaches the narrow phase as parts, each pair of parts with its own
@@ -239,14 +239,15 @@ impl<H> StickSlip<H> {
         if m.solver_contacts.is_empty() || !(dt > 0.0) {
             return;
         }
-        let basis = TangentBasis::new(*m.normal);
+        let basis = crate::tangent::basis(*m.normal);
         let (p, surface) = centroid(m.solver_contacts);
         if surface != Vector::ZERO && !self.moving_surfaces.load(Ordering::Relaxed) {
             self.moving_surfaces.store(true, Ordering::Relaxed);
         }
         // ġ = v₂ − v₁ of the touching material points (relative to a moving surface).
-        let slip = basis
-            .project(point_velocity(bodies, rb2, p) - point_velocity(bodies, rb1, p) - surface);
+        let slip = basis.project(crate::tangent::world(
+            point_velocity(bodies, rb2, p) - point_velocity(bodies, rb1, p) - surface,
+        ));
         let from_points = measure(
             m.manifold,
             m.solver_contacts,
@@ -264,14 +265,14 @@ impl<H> StickSlip<H> {
             None => (from_points, 1.0),
         };
         let out = step_contact(
-            rec,
+            &mut rec.state,
             &ContactInput {
                 law,
                 source,
                 rel,
                 basis: &basis,
                 normal_force: meas.normal_force,
-                measured_mu: basis.project(meas.mu),
+                measured_mu: basis.project(crate::tangent::world(meas.mu)),
                 slip,
                 dt,
                 time: self.clock.time,
@@ -280,23 +281,24 @@ impl<H> StickSlip<H> {
                 warm_start,
             },
         );
-        *m.friction = rec.limit;
+        *m.friction = rec.state.limit;
         if out.target != [0.0; 2] {
-            let v = basis.lift(out.target);
+            let v = crate::tangent::vector(basis.lift(out.target));
             for c in m.solver_contacts.iter_mut() {
                 c.tangent_velocity += v;
             }
         }
         // Quiet (see `recycle`): the hook would write the same limit and no target again.
         let quiet = out.holding
-            && rec.forming == 0
-            && rec.regime == regime_code(Regime::Sticking)
+            && rec.state.forming == 0
+            && rec.state.regime == Regime::Sticking.code()
             && out.target == [0.0; 2]
             && source.is_none()
             && surface == Vector::ZERO
             && law.can_stick()
             && meas.normal_force > 0.0
-            && stickslip_core::vec2::norm(basis.project(meas.mu)) < QUIET_SHARE * out.limit;
+            && stickslip_core::vec2::norm(basis.project(crate::tangent::world(meas.mu)))
+                < QUIET_SHARE * out.limit;
         if !quiet {
             self.mark_active(bodies, ctx.colliders, c1, c2);
         }

@@ -41,17 +41,15 @@
 //!
 //! How the law maps onto rapier's per-manifold friction — how sticking is realized for every
 //! motion a rigid contact has (translation, rolling, spinning, stacks), and why a hold cannot
-//! pump energy — is in the docs of the per-manifold step (`contact_step.rs`); see
+//! pump energy — is in the docs of the engine-free kernel ([`stickslip_core::contact`]); see
 //! [`VibrationSource`] for vibration.
 #![warn(missing_docs)]
 // `!(x > 0.0)` is deliberate throughout: it rejects NaN along with non-positive values.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 mod collider_map;
-mod contact_step;
 mod contact_store;
 mod hook;
-mod material;
 mod measure;
 mod modifier;
 mod pair_law;
@@ -62,18 +60,16 @@ mod report;
 pub mod scenes;
 pub mod snapshot;
 mod tangent;
-mod vibration;
-mod vibration_limit;
 mod warnings;
 
-pub use material::FrictionMaterial;
 pub use modifier::{
     MAX_DT, MIN_DT, NotReadBack, ReadBack, SWEEP_INTERVAL, StickSlip, StickSlipConfig, valid_dt,
 };
 pub use pair_law::{MAX_COMBINATIONS, combine_rule};
 pub use report::{ContactReport, WorldTotals};
 pub use snapshot::{SnapshotError, StickSlipSnapshot, WorldSnapshot};
-pub use vibration::{
+pub use stickslip_core::FrictionMaterial;
+pub use stickslip_core::contact::{
     Amplitude, MAX_AXIS_COSINE, MAX_COMPONENTS, MAX_FORCE, MAX_FREQUENCY, MAX_RATIO,
     MAX_TANGENTIAL_STIFFNESS, VibrationComponent, VibrationDirection, VibrationMode,
     VibrationSource,

@@ -2,18 +2,18 @@
 
 use crate::collider_map::{ColliderBits, ColliderMap};
 use crate::contact_store::ContactStore;
-use crate::material::FrictionMaterial;
 use crate::measure::{Measured, measure};
 use crate::pair_law::{Combined, PairMaterials, Palette, pair_key};
 use crate::recycle::Recycling;
 use crate::report::{ContactReport, WorldTotals};
-use crate::vibration::VibrationSource;
 use crate::warnings::{Warned, Warning};
 use rapier3d::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicBool, Ordering};
+use stickslip_core::FrictionMaterial;
 use stickslip_core::ParamError;
+use stickslip_core::contact::VibrationSource;
 use stickslip_core::error::positive;
 
 /// Tuning of the rapier realization (validated with [`StickSlipConfig::validate`]).

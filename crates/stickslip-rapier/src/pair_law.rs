@@ -15,10 +15,10 @@
 //! leave the valid range (e.g. `Multiply` of two tiny coefficients) becomes plain Coulomb at
 //! the combined break-away coefficient, clamped into range, with a one-time warning.
 
-use crate::material::FrictionMaterial;
 use crate::modifier::StickSlip;
 use rapier3d::prelude::*;
 use std::collections::HashMap;
+use stickslip_core::FrictionMaterial;
 use stickslip_core::law::{CombineRule, Coulomb, FrictionLaw, Law};
 
 /// Most combined laws the cache keeps before it starts over.

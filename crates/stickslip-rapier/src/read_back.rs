@@ -1,9 +1,8 @@
 //! The read-back of one manifold after a step: its [`ContactReport`] in world space.
 
-use crate::contact_store::{ContactRecord, REGIME_RESET, regime_of};
+use crate::contact_store::ContactRecord;
 use crate::measure::{measure, point_velocity, world_centroid};
 use crate::report::ContactReport;
-use crate::tangent::TangentBasis;
 use rapier3d::prelude::*;
 use stickslip_core::law::Regime;
 
@@ -18,7 +17,7 @@ pub(crate) fn report(
     dt: f64,
     moving_surfaces: bool,
 ) -> ContactReport {
-    if rec.regime == REGIME_RESET {
+    if rec.state.was_reset() {
         return reset_report(rec, c1, c2);
     }
     let Some((p, targets)) = world_centroid(m, colliders, (c1, c2)) else {
@@ -40,22 +39,22 @@ pub(crate) fn report(
         crate::rapier_compat::warm_before(rec),
     );
     let n = m.data.normal;
-    let basis = TangentBasis::new(n);
-    let slip = basis.tangential(
+    let tangential = |v: Vector| v - n * v.dot(n);
+    let slip = tangential(
         point_velocity(bodies, m.data.rigid_body2, p)
             - point_velocity(bodies, m.data.rigid_body1, p)
             - surface,
     );
-    let friction = basis.tangential(meas.mu) * -(meas.normal_force as f32);
+    let friction = tangential(meas.mu) * -(meas.normal_force as f32);
     let f_n = meas.normal_force;
     let report = ContactReport {
         collider1: c1,
         collider2: c2,
         point: p.to_array(),
         normal: n.to_array(),
-        regime: regime_of(rec.regime),
+        regime: Regime::from_code(rec.state.regime),
         mu: if f_n > 0.0 {
-            rec.force.length() as f64 / f_n
+            stickslip_core::contact::length(rec.state.force) as f64 / f_n
         } else {
             0.0
         },
@@ -95,7 +94,7 @@ fn reset_report(rec: &ContactRecord, c1: ColliderHandle, c2: ColliderHandle) -> 
         normal: [0.0; 3],
         regime: Regime::Sticking,
         mu: 0.0,
-        limit: rec.limit as f64,
+        limit: rec.state.limit as f64,
         normal_force: 0.0,
         friction_force: [0.0; 3],
         slip_velocity: [0.0; 3],

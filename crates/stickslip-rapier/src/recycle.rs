@@ -56,15 +56,14 @@
 //! With `contact_recycling` off, or a pause (dt = 0), every flag stays on.
 
 use crate::collider_map::{AtomicColliderBits, ColliderBits, ColliderMap};
-use crate::contact_store::regime_code;
 use crate::measure::measure;
 use crate::modifier::StickSlip;
 use rapier3d::prelude::*;
 use stickslip_core::law::Regime;
 
 /// Share of the friction limit below which a held contact is quiet: the solver held it (the
-/// saturation margin of `contact_step`).
-pub(crate) const QUIET_SHARE: f64 = 1.0 - crate::contact_step::SATURATION;
+/// saturation margin of `stickslip_core::contact::step_contact`).
+pub(crate) const QUIET_SHARE: f64 = 1.0 - stickslip_core::contact::SATURATION;
 /// Share of the recycle window a quiet body may drift (translation, plus the rotation's chord
 /// at the collider's reach) before its contacts are hooked again.
 pub(crate) const DRIFT_SHARE: f32 = 0.25;
@@ -370,20 +369,21 @@ impl<H> StickSlip<H> {
                     );
                     let f_n = meas.normal_force;
                     let tangential = meas.mu - n * n.dot(meas.mu);
-                    let ok = rec.limit.to_bits() == m.data.friction.to_bits()
-                        && rec.regime == regime_code(Regime::Sticking)
-                        && rec.forming == 0
-                        && rec.limit > 0.0
+                    let state = &mut rec.state;
+                    let ok = state.limit.to_bits() == m.data.friction.to_bits()
+                        && state.regime == Regime::Sticking.code()
+                        && state.forming == 0
+                        && state.limit > 0.0
                         && f_n > 0.0
-                        && (tangential.length() as f64) < QUIET_SHARE * rec.limit as f64;
+                        && (tangential.length() as f64) < QUIET_SHARE * state.limit as f64;
                     if ok {
                         // What the hook does to a held contact: the held force and the
                         // mean normal force from the solve.
-                        crate::rapier_compat::remember_warm_start(rec, meas.warm_start_impulse);
-                        rec.force = tangential * f_n as f32;
+                        state.force = crate::tangent::world(tangential * f_n as f32);
                         let w = (dt / stiffness_time).min(1.0);
-                        let mean = rec.mean_normal_force as f64;
-                        rec.mean_normal_force = (mean + w * (f_n - mean)) as f32;
+                        let mean = state.mean_normal_force as f64;
+                        state.mean_normal_force = (mean + w * (f_n - mean)) as f32;
+                        crate::rapier_compat::remember_warm_start(rec, meas.warm_start_impulse);
                     }
                     (ok, meas)
                 });

@@ -70,17 +70,18 @@ use crate::contact_store::{
     ContactKey, ContactRecord, ContactStore, INDEX_BITS, LiveImage, ManifoldPart, SlotImage,
     StoreImage,
 };
-use crate::material::FrictionMaterial;
 use crate::measure::Measured;
 use crate::modifier::{Clock, ReadBack, StickSlip, StickSlipConfig};
 use crate::report::{ContactReport, WorldTotals};
-use crate::vibration::{
-    Amplitude, VibrationComponent, VibrationDirection, VibrationMode, VibrationSource,
-};
 use rapier3d::prelude::*;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use std::io::{Read, Write};
+use stickslip_core::FrictionMaterial;
 use stickslip_core::ParamError;
+use stickslip_core::contact::ContactState;
+use stickslip_core::contact::{
+    Amplitude, VibrationComponent, VibrationDirection, VibrationMode, VibrationSource,
+};
 use stickslip_core::law::Regime;
 use stickslip_core::waveform::Waveform;
 
@@ -315,21 +316,21 @@ struct RecordSnapshot {
 
 impl From<&LiveImage> for RecordSnapshot {
     fn from(l: &LiveImage) -> Self {
-        let r = &l.record;
+        let r = &l.record.state;
         RecordSnapshot {
             c1: l.c1,
             c2: l.c2,
-            force: r.force.to_array(),
+            force: r.force,
             slide: r.slide,
             limit: r.limit,
             slip_speed: r.slip_speed,
-            inner_user_data: r.inner_user_data,
+            inner_user_data: l.record.inner_user_data,
             mean_normal_force: r.mean_normal_force,
             touched_odd: l.touched_odd,
             regime: r.regime,
             forming: r.forming,
             #[cfg(rapier_035)]
-            warm_start_impulse: r.warm_start_impulse,
+            warm_start_impulse: l.record.warm_start_impulse,
             #[cfg(not(rapier_035))]
             warm_start_impulse: 0.0,
         }
@@ -358,7 +359,7 @@ impl RecordSnapshot {
                 "negative friction limit, slip speed or mean normal force",
             ));
         }
-        if self.forming > crate::contact_step::GIVING {
+        if self.forming > stickslip_core::contact::GIVING {
             return Err(invalid(
                 "contact state",
                 format!(
@@ -369,7 +370,7 @@ impl RecordSnapshot {
         }
         if !matches!(
             self.regime,
-            0..=2 | crate::contact_store::REGIME_RESET | u8::MAX
+            0..=2 | stickslip_core::contact::REGIME_RESET | stickslip_core::contact::REGIME_NONE
         ) {
             return Err(invalid(
                 "contact state",
@@ -381,14 +382,16 @@ impl RecordSnapshot {
             c2: self.c2,
             touched_odd: self.touched_odd,
             record: ContactRecord {
-                force: Vector::from_array(self.force),
-                slide: self.slide,
-                limit: self.limit,
-                slip_speed: self.slip_speed,
+                state: ContactState {
+                    force: self.force,
+                    slide: self.slide,
+                    limit: self.limit,
+                    slip_speed: self.slip_speed,
+                    mean_normal_force: self.mean_normal_force,
+                    regime: self.regime,
+                    forming: self.forming,
+                },
                 inner_user_data: self.inner_user_data,
-                mean_normal_force: self.mean_normal_force,
-                regime: self.regime,
-                forming: self.forming,
                 #[cfg(rapier_035)]
                 warm_start_impulse: self.warm_start_impulse,
             },

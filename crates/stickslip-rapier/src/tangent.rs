@@ -1,39 +1,44 @@
-//! The one place where rapier's `Vec3` (f32) meets the core's tangent-plane `[f64; 2]`.
+//! The one place where rapier's `Vector` (f32, 3D or 2D) meets the kernel's world vectors
+//! (`[f32; 3]`, z = 0 in 2D) and a contact's tangent plane (3D) or tangent line (2D).
 
 use rapier3d::prelude::Vector;
-use stickslip_core::vec2::Vec2;
+use stickslip_core::contact::{TangentBasis, World};
 
-/// An orthonormal basis (t1, t2) of the plane normal to `n`.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct TangentBasis {
-    pub t1: Vector,
-    pub t2: Vector,
-    pub n: Vector,
+/// The kernel's form of a world vector.
+#[inline]
+pub(crate) fn world(v: Vector) -> World {
+    #[cfg(not(dim2))]
+    {
+        v.to_array()
+    }
+    #[cfg(dim2)]
+    {
+        [v.x, v.y, 0.0]
+    }
 }
 
-impl TangentBasis {
-    /// Basis for unit normal `n` (any orientation of t1 works: the law is isotropic).
-    pub fn new(n: Vector) -> Self {
-        let t1 = n.any_orthonormal_vector();
-        TangentBasis {
-            t1,
-            t2: n.cross(t1),
-            n,
-        }
+/// rapier's form of a kernel world vector.
+#[inline]
+pub(crate) fn vector(w: World) -> Vector {
+    #[cfg(not(dim2))]
+    {
+        Vector::from_array(w)
     }
-
-    /// Tangential components of a world vector.
-    pub fn project(&self, v: Vector) -> Vec2 {
-        [v.dot(self.t1) as f64, v.dot(self.t2) as f64]
+    #[cfg(dim2)]
+    {
+        Vector::new(w[0], w[1])
     }
+}
 
-    /// World vector from tangential components.
-    pub fn lift(&self, v: Vec2) -> Vector {
-        self.t1 * v[0] as f32 + self.t2 * v[1] as f32
+/// The tangent plane (3D) or line (2D) of a contact with unit normal `n`.
+#[inline]
+pub(crate) fn basis(n: Vector) -> TangentBasis {
+    #[cfg(not(dim2))]
+    {
+        TangentBasis::plane(world(n), world(n.any_orthonormal_vector()))
     }
-
-    /// `v` with its normal component removed.
-    pub fn tangential(&self, v: Vector) -> Vector {
-        v - self.n * v.dot(self.n)
+    #[cfg(dim2)]
+    {
+        TangentBasis::line([n.x, n.y])
     }
 }

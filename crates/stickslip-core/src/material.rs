@@ -1,14 +1,13 @@
 //! Per-collider friction material.
 
+use crate::law::Law;
 use serde::{Deserialize, Serialize};
-use stickslip_core::law::Law;
 
 /// The friction law a collider's contacts use (and its parameters).
 ///
-/// Two colliders' materials combine like rapier's friction coefficients, by the colliders'
-/// `friction_combine_rule` (see [`crate::StickSlip::attach`]); a pair can have its own
-/// ([`crate::StickSlip::set_pair_material`]). Attached colliders without one use the
-/// modifier's default.
+/// Two colliders' materials combine like the engine combines friction coefficients, by a
+/// [`crate::law::CombineRule`] (in rapier, the colliders' `friction_combine_rule`); an adapter
+/// may give a pair its own. Colliders attached without one use the adapter's default.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct FrictionMaterial {
     /// The law: elasto-plastic (the point of stickslip), or a baseline for comparison.

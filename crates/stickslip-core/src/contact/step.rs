@@ -1,8 +1,8 @@
 //! The per-manifold step: a pure function from what the last solve left at a contact patch
 //! (normal force, measured friction, the slip of the touching points) and the contact's
 //! friction state to what the solver gets next (a friction limit and a target tangent
-//! velocity) and the updated state. The [`rapier3d::pipeline::PhysicsHooks`] impl
-//! (`crate::hook`) only gathers these inputs and writes the outputs.
+//! velocity) and the updated state. It knows no engine: an adapter (stickslip-rapier's
+//! `PhysicsHooks` impl) only gathers these inputs and writes the outputs.
 //!
 //! ## How sticking is realized
 //! rapier solves one friction constraint per manifold (`FrictionModel::Simplified`): a rigid
@@ -63,16 +63,16 @@
 //! friction row holds a loaded box as tightly as the law's elastic range (an incline at 0.95
 //! of break-away: −4.7 µm in 10 s against g_ba = 50 µm), and the stack stands.
 
-use crate::contact_store::{ContactRecord, REGIME_RESET, regime_code};
-use crate::tangent::TangentBasis;
-use crate::vibration::{VibrationMode, VibrationSource};
-use crate::vibration_limit::{in_plane_force, in_plane_limit, normal_factor, static_factor};
-use stickslip_core::law::{FrictionLaw, FrictionState, Law, Regime, StepInput};
-use stickslip_core::vec2::{self, Vec2};
+use super::state::{ContactState, REGIME_RESET};
+use super::tangent::{TangentBasis, length};
+use super::vibration::{VibrationMode, VibrationSource};
+use super::vibration_limit::{in_plane_force, in_plane_limit, normal_factor, static_factor};
+use crate::law::{FrictionLaw, FrictionState, Law, Regime, StepInput};
+use crate::vec2::{self, Vec2};
 
 /// Relative margin below the imposed limit within which the solver's friction counts as
 /// saturated (the impulses are f32).
-pub(crate) const SATURATION: f64 = 1e-3;
+pub const SATURATION: f64 = 1e-3;
 
 /// Beyond these a contact's inputs are garbage for an f32 solver, not physics: a force whose
 /// friction share overflows f32, a slip faster than anything rapier integrates meaningfully.
@@ -86,8 +86,8 @@ const WARM: f64 = 0.9;
 /// the slip it let through.
 const FORMING_STEPS: u8 = 2;
 
-/// `ContactRecord::forming` of a contact giving under a jump in load (see `step_contact`).
-pub(crate) const GIVING: u8 = 3;
+/// `ContactState::forming` of a contact giving under a jump in load (see `step_contact`).
+pub const GIVING: u8 = 3;
 /// Share of the limit below which the friction a held contact carried makes a saturated
 /// solve after it a jump in load (see `step_contact`).
 const JUMP_SHARE: f64 = 0.9;
@@ -104,7 +104,7 @@ const ALIGNED: f64 = 0.999;
 
 /// What the last solve left at a contact patch, and what governs it.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct ContactInput<'a> {
+pub struct ContactInput<'a> {
     /// The contact's friction law.
     pub law: &'a Law,
     /// The vibration source of either collider.
@@ -137,7 +137,7 @@ pub(crate) struct ContactInput<'a> {
 
 /// What the solver gets for the next step.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct ContactOutput {
+pub struct ContactOutput {
     /// Friction coefficient limit (≥ 0).
     pub limit: f64,
     /// Target relative tangential velocity to add (m/s, tangent plane), from the law or the
@@ -151,7 +151,7 @@ pub(crate) struct ContactOutput {
 /// this step's solve, so the slip this step makes is ġ_{k+1} dt. While the slip accelerates
 /// (break-away), extrapolate it, ġ_{k+1} ≈ ġ_k + (|ġ_k| − |ġ_{k−1}|) along ġ_k, at most
 /// doubled; otherwise ġ_k: the law is then not one step behind the motion it resists.
-fn slip_ahead(rec: &ContactRecord, slip: Vec2, dt: f64) -> Vec2 {
+fn slip_ahead(rec: &ContactState, slip: Vec2, dt: f64) -> Vec2 {
     let speed = vec2::norm(slip);
     let growth = (speed - rec.slip_speed as f64).clamp(0.0, speed);
     let ahead = if speed > 0.0 {
@@ -178,7 +178,7 @@ fn slip_ahead(rec: &ContactRecord, slip: Vec2, dt: f64) -> Vec2 {
 ///   not drop (a load rising over steps is resolved by the solver as it comes; an unloading
 ///   contact saturates without any jump), or shrinks from the last step's (a slip the law's
 ///   elastic range took at first, or a give going on).
-fn gives(rec: &ContactRecord, input: &ContactInput, saturated: bool, speed: f64) -> bool {
+fn gives(rec: &ContactState, input: &ContactInput, saturated: bool, speed: f64) -> bool {
     let limit = rec.limit as f64;
     let (f_n, dt) = (input.normal_force, input.dt);
     if !(saturated
@@ -191,12 +191,12 @@ fn gives(rec: &ContactRecord, input: &ContactInput, saturated: bool, speed: f64)
     let shrinking = speed < rec.slip_speed as f64;
     if rec.forming == GIVING {
         shrinking
-    } else if rec.regime != regime_code(Regime::Sticking) {
+    } else if rec.regime != Regime::Sticking.code() {
         false
     } else if rec.slip_speed == 0.0 {
         // The friction it carried was well inside the limit, under a normal force that did
         // not drop (a contact unloading, lifting off, saturates without any jump).
-        (rec.force.length() as f64) < JUMP_SHARE * limit * f_n
+        (length(rec.force) as f64) < JUMP_SHARE * limit * f_n
             && f_n >= JUMP_SHARE * rec.mean_normal_force as f64
     } else {
         shrinking
@@ -204,7 +204,7 @@ fn gives(rec: &ContactRecord, input: &ContactInput, saturated: bool, speed: f64)
 }
 
 /// One step of one contact patch: updates `rec` and returns what the solver gets.
-pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> ContactOutput {
+pub fn step_contact(rec: &mut ContactState, input: &ContactInput) -> ContactOutput {
     let ContactInput {
         law,
         source,
@@ -225,11 +225,10 @@ pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> Con
     // overflowed) never enter the friction state: the contact is reset, held by the law's
     // static coefficient, and reported as reset.
     if !(speed <= MAX_SANE_SPEED && f_n.abs() <= MAX_SANE_FORCE && mu_meas.is_finite()) {
-        *rec = ContactRecord {
-            inner_user_data: rec.inner_user_data,
+        *rec = ContactState {
             regime: REGIME_RESET,
             limit: law.static_coefficient() as f32,
-            ..ContactRecord::default()
+            ..ContactState::default()
         };
         return ContactOutput {
             limit: law.static_coefficient(),
@@ -247,13 +246,13 @@ pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> Con
         // prediction distance). An unloaded spring relaxes (the law's state goes to zero);
         // like a new contact, a landing seeds its mean normal force (the stiffness c·F̄) with
         // its first load, so an impact is as stiff as the seed's law, Eq. 4.
-        rec.force = Default::default();
+        rec.force = [0.0; 3];
         rec.slide = 0.0;
         rec.mean_normal_force = 0.0;
         // The coming solve builds the normal force from nothing.
         rec.forming = FORMING_STEPS;
         holding = can_stick;
-        rec.regime = regime_code(Regime::Sticking);
+        rec.regime = Regime::Sticking.code();
         limit = if can_stick {
             law.static_coefficient()
         } else {
@@ -360,11 +359,12 @@ pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> Con
             state.force
         });
         rec.slide = state.slide as f32;
-        rec.regime = regime_code(if holding && (give || out.regime == Regime::Sliding) {
+        rec.regime = (if holding && (give || out.regime == Regime::Sliding) {
             Regime::StickSlip
         } else {
             out.regime
-        });
+        })
+        .code();
         // Holding: the law's capacity before it yields. Slipping: the law is resolved by the
         // step, so the solver applies exactly the law's force |μ⃗| F_n — except where the law
         // still calls the contact sticking without memory of a spring (a memoryless law below
@@ -429,15 +429,14 @@ pub(crate) fn step_contact(rec: &mut ContactRecord, input: &ContactInput) -> Con
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rapier3d::prelude::Vector;
-    use stickslip_core::sliding_curve::Curve;
+    use crate::sliding_curve::Curve;
 
     fn ep() -> Law {
         Law::elasto_plastic(1e5, 0.5, 0.5, Curve::constant(0.5).unwrap()).unwrap()
     }
 
     fn basis() -> TangentBasis {
-        TangentBasis::new(Vector::Y)
+        TangentBasis::plane([0.0, 1.0, 0.0], [1.0, 0.0, 0.0])
     }
 
     fn input<'a>(law: &'a Law, basis: &'a TangentBasis, mu: Vec2, slip: Vec2) -> ContactInput<'a> {
@@ -458,9 +457,9 @@ mod tests {
     }
 
     /// A contact that has held for a step (its limit set), carrying `mu`.
-    fn held(law: &Law, mu: Vec2) -> ContactRecord {
+    fn held(law: &Law, mu: Vec2) -> ContactState {
         let b = basis();
-        let mut rec = ContactRecord::default();
+        let mut rec = ContactState::default();
         step_contact(&mut rec, &input(law, &b, [0.0; 2], [0.0; 2]));
         step_contact(&mut rec, &input(law, &b, mu, [0.0; 2]));
         rec
@@ -470,10 +469,7 @@ mod tests {
     fn rolling_without_slip_changes_nothing_and_corrects_nothing() {
         // A rolling contact: zero slip at the touching points, a steady friction share.
         let b = basis();
-        for law in [
-            ep(),
-            Law::Coulomb(stickslip_core::law::Coulomb::new(0.5).unwrap()),
-        ] {
+        for law in [ep(), Law::Coulomb(crate::law::Coulomb::new(0.5).unwrap())] {
             let mut rec = held(&law, [0.12, 0.0]);
             let before = rec;
             for _ in 0..100 {
@@ -498,7 +494,7 @@ mod tests {
         }
         let carried = b.project(rec.force);
         assert!((carried[0] - 30.0).abs() < 1e-3 && (carried[1] - 10.0).abs() < 1e-3);
-        assert_eq!(rec.regime, regime_code(Regime::Sticking));
+        assert_eq!(rec.regime, Regime::Sticking.code());
     }
 
     #[test]
@@ -529,7 +525,7 @@ mod tests {
         // The solver's friction reached the limit (0.5) and the contact slips at 1 m/s.
         let out = step_contact(&mut rec, &input(&law, &b, [0.5, 0.0], [1.0, 0.0]));
         assert!(!out.holding);
-        assert_eq!(rec.regime, regime_code(Regime::Sliding));
+        assert_eq!(rec.regime, Regime::Sliding.code());
         assert!((out.limit - 0.5).abs() < 1e-6, "{}", out.limit);
         assert_eq!(out.target, [0.0; 2]);
     }
@@ -539,9 +535,8 @@ mod tests {
         // Phys: the friction touched the limit but nothing slid (a coupled contact in a
         // stack): the limit stays μ_ba, never the zero friction of "sliding at ġ = 0".
         let b = basis();
-        let law = Law::Physical(
-            stickslip_core::law::Physical::new(0.5, Curve::constant(0.4).unwrap()).unwrap(),
-        );
+        let law =
+            Law::Physical(crate::law::Physical::new(0.5, Curve::constant(0.4).unwrap()).unwrap());
         let mut rec = held(&law, [0.1, 0.0]);
         rec.limit = 0.1;
         let out = step_contact(&mut rec, &input(&law, &b, [0.1, 0.0], [1e-9, 0.0]));
@@ -569,7 +564,7 @@ mod tests {
             assert_eq!(out.holding, holds, "{slips:?}");
             if holds {
                 assert_eq!(out.limit, 0.5);
-                assert_eq!(rec.regime, regime_code(Regime::StickSlip));
+                assert_eq!(rec.regime, Regime::StickSlip.code());
             } else {
                 assert!(out.limit < 0.5, "the law yields: {}", out.limit);
             }
@@ -593,6 +588,6 @@ mod tests {
         bad.slip = [f64::INFINITY, 0.0];
         step_contact(&mut rec, &bad);
         assert_eq!(rec.regime, REGIME_RESET);
-        assert!(rec.force.is_finite());
+        assert!(rec.force.iter().all(|x| x.is_finite()));
     }
 }

@@ -13,7 +13,7 @@
 //! force per manifold. Popov's contact spring is the law's: k_t = c·F̄ for the elasto-plastic
 //! law (the law's state is the spring force), else the source's
 //! [`tangential stiffness`](VibrationSource::with_tangential_stiffness). With ū_z = 1 and
-//! k_z = F̄ the theory's ([`stickslip_core::popov::CompliantContact`]) displacement amplitudes
+//! k_z = F̄ the theory's ([`crate::popov::CompliantContact`]) displacement amplitudes
 //! are A_z = A/F̄ (normal) and A_x = A/k_t (in-plane: the spring force k_t A_x of the seed's
 //! base oscillation in stick, Eq. 5–9), the in-plane ones in units of the slip length
 //! μ0 F̄/k_t simply A/(μ0 F̄), and the dimensionless speed is u = v k_t/(μ0 F̄ f).
@@ -41,11 +41,11 @@
 //! - Normal component alone: Popov's μ_s (Eq. 4) while holding and
 //!   μ̄ = μ0 (1 − α Ψ_w(β)) (Eq. 33) while sliding, β = k_t v / (μ0 A f).
 //! - With in-plane components (with or without a normal one): the compliant theory
-//!   ([`stickslip_core::popov::mean_friction`], signed) tabulated once per source and μ0 (and
+//!   ([`crate::popov::mean_friction`], signed) tabulated once per source and μ0 (and
 //!   per 1 % band of F̄ for force amplitudes) over the dimensionless speed u, in the theory's
 //!   frame x̂ = −(tangential axis) (or the slip/load direction without a tangential component),
-//!   with the static band ([`stickslip_core::popov::static_friction_compliant`]) at u = 0 and
-//!   the free drive velocity v_d ([`stickslip_core::popov::free_drive_velocity`]). rapier's
+//!   with the static band ([`crate::popov::static_friction_compliant`]) at u = 0 and
+//!   the free drive velocity v_d ([`crate::popov::free_drive_velocity`]). rapier's
 //!   friction has a limit and a target velocity per manifold: the hook gives it the target
 //!   relative velocity v_d x̂ and the limit |μ̄(u)| with u from the slip along x̂ (holding: the
 //!   end of the static band the load presses on). Since μ̄(u) changes sign exactly at v_d, the
@@ -58,11 +58,11 @@
 
 use std::sync::{Arc, OnceLock, RwLock};
 
+use crate::ParamError;
+use crate::error::{finite, in_range, positive};
+use crate::popov;
+use crate::waveform::Waveform;
 use serde::{Deserialize, Serialize};
-use stickslip_core::ParamError;
-use stickslip_core::error::{finite, in_range, positive};
-use stickslip_core::popov;
-use stickslip_core::waveform::Waveform;
 
 /// Direction of the oscillation.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

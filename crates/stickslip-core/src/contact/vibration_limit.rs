@@ -1,17 +1,16 @@
 //! How a contact's vibration source changes what the solver gets: the normal modulation of a
 //! time-resolved source, the static band of Popov's Eq. 4, 6 and 8, the rigid friction circle
 //! under in-plane vibration (Eq. 9), and the averaged limits and drive velocity of the
-//! compliant theory (Eq. 33 and the drive tables of [`crate::vibration`]). Pure functions of
+//! compliant theory (Eq. 33 and the drive tables of [`super::vibration`]). Pure functions of
 //! the source, the law and the contact's measured quantities.
 
-use crate::tangent::TangentBasis;
-use crate::vibration::{VibrationDirection, VibrationMode, VibrationSource};
-use rapier3d::prelude::Vector;
-use stickslip_core::law::{FrictionLaw, Law};
-use stickslip_core::vec2::{self, Vec2};
+use super::tangent::TangentBasis;
+use super::vibration::{VibrationDirection, VibrationMode, VibrationSource};
+use crate::law::{FrictionLaw, Law};
+use crate::vec2::{self, Vec2};
 
 /// Time-resolved normal vibration: F_n(t) = F̄ (1 + A/F̄ w)⁺.
-pub(crate) fn normal_factor(s: &VibrationSource, f_mean: f64, t: f64) -> f64 {
+pub fn normal_factor(s: &VibrationSource, f_mean: f64, t: f64) -> f64 {
     match (s.normal(), s.mode()) {
         (Some(c), VibrationMode::TimeResolved) => {
             (1.0 + c.amplitude().force(f_mean) / f_mean * s.component_signal(c, t)).max(0.0)
@@ -22,7 +21,7 @@ pub(crate) fn normal_factor(s: &VibrationSource, f_mean: f64, t: f64) -> f64 {
 
 /// The in-plane part a⃗(t) = Σ ± A_i w_i ê_i of the contact spring's force (N), in the slip
 /// convention (`rel` = −1 when the source is on collider 1).
-pub(crate) fn in_plane_force(
+pub fn in_plane_force(
     s: &VibrationSource,
     f_mean: f64,
     basis: &TangentBasis,
@@ -34,7 +33,7 @@ pub(crate) fn in_plane_force(
         let Some(axis) = c.direction().axis() else {
             continue;
         };
-        let Some(e) = vec2::normalize(basis.project(Vector::new(axis[0], axis[1], axis[2]))) else {
+        let Some(e) = vec2::normalize(basis.project(axis)) else {
             continue;
         };
         let w = rel * c.amplitude().force(f_mean) * s.component_signal(c, t);
@@ -46,7 +45,7 @@ pub(crate) fn in_plane_force(
 /// Static (holding) factor of a source before any load is known, or in averaged mode
 /// without a table: Eq. 4 on the normal component, then Eq. 8 and Eq. 6 on what is left (each
 /// exact alone).
-pub(crate) fn static_factor(s: &VibrationSource, mu0: f64, f_mean: Option<f64>) -> f64 {
+pub fn static_factor(s: &VibrationSource, mu0: f64, f_mean: Option<f64>) -> f64 {
     let Some(f) = f_mean.filter(|f| *f > 0.0) else {
         return 1.0;
     };
@@ -74,7 +73,7 @@ pub(crate) fn static_factor(s: &VibrationSource, mu0: f64, f_mean: Option<f64>) 
 /// The limit after in-plane vibration (time-resolved, rigid) or Popov averaging (averaged
 /// mode), and the target slip velocity of an averaged in-plane source.
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn in_plane_limit(
+pub fn in_plane_limit(
     s: &VibrationSource,
     limit: f64,
     f_n: f64,
@@ -158,8 +157,7 @@ fn averaged_in_plane(
         _ => None,
     });
     let x = match tangential {
-        Some(axis) => vec2::normalize(basis.project(Vector::new(axis[0], axis[1], axis[2])))
-            .map(|e| vec2::scale(e, rel)),
+        Some(axis) => vec2::normalize(basis.project(axis)).map(|e| vec2::scale(e, rel)),
         None => vec2::normalize(slip).or_else(|| vec2::normalize(mu_state)),
     };
     let Some(x) = x else {
