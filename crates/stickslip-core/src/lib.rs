@@ -24,6 +24,7 @@ pub mod block;
 #[cfg(feature = "reference-chain")]
 #[doc(hidden)]
 pub mod chain;
+mod combine_rule;
 pub mod contact;
 pub mod error;
 pub mod feeder;

@@ -74,7 +74,7 @@ pub enum Curve {
     /// [`Curve::combine`]).
     Combined {
         /// How the two values combine.
-        rule: crate::law::CombineRule,
+        rule: crate::combine_rule::CombineRule,
         /// The two surfaces' curves.
         curves: Box<[Curve; 2]>,
     },

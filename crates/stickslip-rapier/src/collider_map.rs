@@ -1,7 +1,7 @@
 //! Dense per-collider storage indexed by the collider handle's arena slot: a lookup in the
 //! contact hook is one bounds check and a generation compare, no hashing and no lock.
 
-use rapier3d::prelude::ColliderHandle;
+use rapier::prelude::ColliderHandle;
 
 /// Largest arena index accepted (16.7 million colliders): the map is dense, so an index from
 /// an invalid or forged handle must not size it.

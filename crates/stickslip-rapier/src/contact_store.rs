@@ -26,7 +26,7 @@
 //! extrapolate an accelerating slip) is kept as a bfloat16 (8 significant bits), the colliders
 //! by arena index, and liveness, sweep parity, regime and generation share one 16-bit word. The hook works on the unpacked [`ContactRecord`].
 
-use rapier3d::prelude::{ColliderHandle, Vector};
+use rapier::prelude::{ColliderHandle, Vector};
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -61,8 +61,19 @@ impl ManifoldPart {
     /// The cluster cell of a unit normal.
     pub fn cluster(normal: Vector) -> ManifoldPart {
         let cell = |x: f32| (x.clamp(-1.0, 1.0) * 50.0).round() as i8;
-        ManifoldPart::Cluster([cell(normal.x), cell(normal.y), cell(normal.z)])
+        let [x, y, z] = crate::tangent::world(normal);
+        ManifoldPart::Cluster([cell(x), cell(y), cell(z)])
     }
+}
+
+/// Whether a shape reaches the narrow phase as parts, each pair of parts with its own
+/// manifold.
+pub(crate) fn is_composite(shape: &dyn rapier::prelude::Shape) -> bool {
+    shape.as_composite_shape().is_some()
+        || matches!(
+            shape.shape_type(),
+            rapier::prelude::ShapeType::HeightField | rapier::prelude::ShapeType::Voxels
+        )
 }
 
 /// The state of one contact manifold, as the hook works on it: the kernel's state and what
@@ -739,7 +750,7 @@ impl ContactStore {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rapier3d::prelude::ColliderHandle;
+    use rapier::prelude::ColliderHandle;
 
     fn key(a: u32, b: u32) -> ContactKey {
         ContactKey {

@@ -7,27 +7,17 @@
 //! rapier keeps one friction coefficient and (by default in 3D, `FrictionModel::Simplified`)
 //! one friction constraint per manifold, so stickslip keeps one friction state per manifold.
 
-use crate::contact_store::{ContactKey, ContactRecord, ManifoldPart};
+use crate::contact_store::{ContactKey, ContactRecord, ManifoldPart, is_composite};
 use crate::measure::{Measured, centroid, measure, point_velocity};
 use crate::modifier::StickSlip;
+use crate::quiet::QUIET_SHARE;
 #[cfg(rapier_035)]
 use crate::rapier_compat::RigidManifold;
-use crate::recycle::QUIET_SHARE;
 use crate::warnings::Warning;
-use rapier3d::prelude::*;
+use rapier::prelude::*;
 use std::sync::atomic::Ordering;
 use stickslip_core::contact::{ContactInput, step_contact};
 use stickslip_core::law::{Law, Regime};
-
-/// Whether a shape reaches the narrow phase as parts, each pair of parts with its own
-/// manifold.
-pub(crate) fn is_composite(shape: &dyn Shape) -> bool {
-    shape.as_composite_shape().is_some()
-        || matches!(
-            shape.shape_type(),
-            ShapeType::HeightField | ShapeType::Voxels
-        )
-}
 
 /// The key of a manifold (see [`ManifoldPart`]): two convex shapes have one manifold; a
 /// composite shape one per sub-shape pair, or, when rapier clusters them for the solver, one
@@ -127,7 +117,7 @@ impl<H> StickSlip<H> {
             return;
         }
         if !self.clock.open {
-            self.warn_once(
+            self.warned.once(
                 Warning::NoBeginStep,
                 "stickslip: the physics hook ran without StickSlip::begin_step since the last \
                  end_step; stickslip leaves such steps to rapier's friction (call begin_step \
@@ -213,9 +203,10 @@ impl<H> StickSlip<H> {
     ) {
         let (c1, c2) = (ctx.collider1, ctx.collider2);
         let colliders = ctx.colliders;
-        self.with_pair_law(colliders, c1, c2, |law| {
-            self.step_manifold(ctx, rec, measured, law)
-        });
+        self.laws
+            .with_pair_law(&self.attached, colliders, (c1, c2), &self.warned, |law| {
+                self.step_manifold(ctx, rec, measured, law)
+            });
     }
 
     fn step_manifold(

@@ -6,6 +6,7 @@
 //!
 //! ## Quick start
 //! ```
+//! # extern crate rapier as rapier3d;
 //! use rapier3d::prelude::*;
 //! use stickslip_core::law::Law;
 //! use stickslip_core::sliding_curve::Curve;
@@ -53,10 +54,12 @@ mod hook;
 mod measure;
 mod modifier;
 mod pair_law;
+mod quiet;
 mod rapier_compat;
 mod read_back;
 mod recycle;
 mod report;
+#[cfg(not(dim2))]
 pub mod scenes;
 pub mod snapshot;
 mod tangent;
@@ -66,7 +69,7 @@ pub use modifier::{
     MAX_DT, MIN_DT, NotReadBack, ReadBack, SWEEP_INTERVAL, StickSlip, StickSlipConfig, valid_dt,
 };
 pub use pair_law::{MAX_COMBINATIONS, combine_rule};
-pub use report::{ContactReport, WorldTotals};
+pub use report::{ContactReport, DIM, WorldTotals};
 pub use snapshot::{SnapshotError, StickSlipSnapshot, WorldSnapshot};
 pub use stickslip_core::FrictionMaterial;
 pub use stickslip_core::contact::{
@@ -77,3 +80,7 @@ pub use stickslip_core::contact::{
 
 /// Re-export of the core crate.
 pub use stickslip_core as core;
+
+/// Re-export of the rapier this adapter is built for (rapier3d 0.36, rapier3d 0.35 or
+/// rapier2d 0.36), for code that must name the same version.
+pub use rapier;

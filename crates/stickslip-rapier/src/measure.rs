@@ -1,14 +1,14 @@
 //! What a manifold tells after a solve: its normal force and measured friction, the centroid
 //! of its solver contacts, and the velocity of a body's material point.
 
-use rapier3d::prelude::*;
+use rapier::prelude::*;
 
 /// Normal and friction measurement of a manifold from the last solve.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Measured {
     /// Normal force over the step (N).
     pub normal_force: f64,
-    /// Friction impulse over normal impulse of the last substep: μ⃗ with F_f(body 2) = −F_n μ⃗.
+    /// Friction impulse over normal impulse of the last solve: μ⃗ with F_f(body 2) = −F_n μ⃗.
     pub mu: Vector,
     /// The warm-start impulse the points carry now (summed): what the next solve starts
     /// from (rapier 0.35 reports it inside the solve's impulse, see `rapier_compat`).
@@ -18,8 +18,10 @@ pub(crate) struct Measured {
 /// Measures a manifold from the points its solver contacts stand for: before the solve
 /// (inside the hook) they carry the last solve's impulses, carried over by rapier (by feature
 /// id, or by position into a cluster); after the solve, this solve's. Points the solver did not
-/// use may hold stale impulses and are skipped. Friction is one constraint per manifold
-/// (`FrictionModel::Simplified`), whose impulse rapier stores on each of its points.
+/// use may hold stale impulses and are skipped. In 3D friction is one constraint per manifold
+/// (`FrictionModel::Simplified`), whose impulse rapier stores on each of its points; in 2D each
+/// point has its own friction row along t = (n_y, −n_x) (rapier's tangent of −n), whose
+/// impulses add up to the manifold's.
 /// `warm_before`: the warm-start impulse that solve started from, where known (only rapier
 /// 0.35 needs it).
 pub(crate) fn measure(
@@ -36,8 +38,15 @@ pub(crate) fn measure(
         };
         impulse += p.data.impulse as f64;
         warm += p.data.warmstart_impulse as f64;
+        #[cfg(not(dim2))]
         if friction.is_none() && p.data.warmstart_impulse != 0.0 {
             friction = Some(p.data.warmstart_tangent_world);
+        }
+        #[cfg(dim2)]
+        {
+            let n = m.data.normal;
+            let t = Vector::new(n.y, -n.x) * p.data.warmstart_tangent_impulse.x;
+            friction = Some(friction.unwrap_or(Vector::ZERO) + t);
         }
     }
     let impulse = crate::rapier_compat::solve_impulse(impulse, warm, warm_before);

@@ -3,11 +3,11 @@
 use crate::collider_map::{ColliderBits, ColliderMap};
 use crate::contact_store::ContactStore;
 use crate::measure::{Measured, measure};
-use crate::pair_law::{Combined, PairMaterials, Palette, pair_key};
-use crate::recycle::Recycling;
+use crate::pair_law::PairLaws;
+use crate::quiet::Recycling;
 use crate::report::{ContactReport, WorldTotals};
 use crate::warnings::{Warned, Warning};
-use rapier3d::prelude::*;
+use rapier::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -15,6 +15,7 @@ use stickslip_core::FrictionMaterial;
 use stickslip_core::ParamError;
 use stickslip_core::contact::VibrationSource;
 use stickslip_core::error::positive;
+use stickslip_core::law::Law;
 
 /// Tuning of the rapier realization (validated with [`StickSlipConfig::validate`]).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -151,16 +152,10 @@ pub const SWEEP_INTERVAL: u32 = 8;
 /// [`StickSlip::end_step`] — or [`StickSlip::step`] on a [`PhysicsWorld`], which does all three.
 pub struct StickSlip<H = ()> {
     pub(crate) config: StickSlipConfig,
-    /// Every material in use, by id (0: the default).
-    pub(crate) palette: Palette,
-    /// The material id of colliders attached with a material of their own.
-    pub(crate) materials: ColliderMap<u32>,
+    /// Materials, per-pair overrides and combined laws (see `pair_law`).
+    pub(crate) laws: PairLaws,
     /// Colliders attached (their pairs are stickslip's), default material or not.
     pub(crate) attached: ColliderBits,
-    /// Per-pair overrides, by [`pair_key`].
-    pub(crate) pair_materials: PairMaterials,
-    /// Laws of combined materials (see `pair_law`).
-    pub(crate) combined: Combined,
     pub(crate) vibrations: ColliderMap<VibrationSource>,
     /// Colliders whose hook flag `attach` turned on.
     pub(crate) flagged: ColliderBits,
@@ -202,11 +197,8 @@ impl<H> StickSlip<H> {
     pub fn with_hooks(material: impl Into<FrictionMaterial>, inner: H) -> Self {
         StickSlip {
             config: StickSlipConfig::default(),
-            palette: Palette::new(material.into()),
-            materials: ColliderMap::default(),
+            laws: PairLaws::new(material.into()),
             attached: ColliderBits::default(),
-            pair_materials: PairMaterials::default(),
-            combined: Combined::default(),
             warned: Warned::default(),
             vibrations: ColliderMap::default(),
             flagged: ColliderBits::default(),
@@ -269,18 +261,38 @@ impl<H> StickSlip<H> {
 
     /// The material of attached colliders that have none of their own.
     pub fn default_material(&self) -> &FrictionMaterial {
-        self.palette.default_material()
+        self.laws.default_material()
     }
 
     /// The material a collider was given (`None`: it uses the default, or is not attached).
     pub fn material(&self, collider: ColliderHandle) -> Option<&FrictionMaterial> {
-        self.materials.get(collider).map(|&id| self.palette.get(id))
+        self.laws.material(collider)
     }
 
     /// Whether `collider`'s contacts are quiet and rapier recycles them: stickslip turned its
     /// hook flag off (see [`Self::end_step`]).
     pub fn is_recycled(&self, collider: ColliderHandle) -> bool {
         self.recycling.quiet.contains(collider) && self.attached.contains(collider)
+    }
+
+    /// Whether stickslip decides the friction of the pair: one of them was attached.
+    pub(crate) fn owns(&self, c1: ColliderHandle, c2: ColliderHandle) -> bool {
+        self.attached.contains(c1) || self.attached.contains(c2)
+    }
+
+    /// The law stickslip gives the pair `(a, b)` of `colliders` (the pair's own material, or
+    /// the two sides combined; see [`StickSlip::attach`]); `None` when neither is attached
+    /// (the pair is rapier's and the wrapped hooks'). The same whichever is first.
+    pub fn pair_law(
+        &self,
+        colliders: &ColliderSet,
+        a: ColliderHandle,
+        b: ColliderHandle,
+    ) -> Option<Law> {
+        self.owns(a, b).then(|| {
+            self.laws
+                .with_pair_law(&self.attached, colliders, (a, b), &self.warned, Law::clone)
+        })
     }
 
     /// Whether `collider` is attached ([`Self::attach`]): its pairs are stickslip's.
@@ -297,7 +309,7 @@ impl<H> StickSlip<H> {
         b: ColliderHandle,
         material: impl Into<FrictionMaterial>,
     ) {
-        self.pair_materials.insert(pair_key(a, b), material.into());
+        self.laws.set_pair(a, b, material.into());
         self.recycling.wake(a);
         self.recycling.wake(b);
     }
@@ -310,12 +322,12 @@ impl<H> StickSlip<H> {
     ) -> Option<FrictionMaterial> {
         self.recycling.wake(a);
         self.recycling.wake(b);
-        self.pair_materials.remove(&pair_key(a, b))
+        self.laws.remove_pair(a, b)
     }
 
     /// A pair's own material ([`Self::set_pair_material`]).
     pub fn pair_material(&self, a: ColliderHandle, b: ColliderHandle) -> Option<&FrictionMaterial> {
-        self.pair_materials.get(&pair_key(a, b))
+        self.laws.pair(a, b)
     }
 
     /// The wrapped hooks.
@@ -367,13 +379,8 @@ impl<H> StickSlip<H> {
         self.recycling.active.cover(collider);
         self.attached.set(collider, true);
         match material {
-            Some(m) => {
-                let id = self.palette.id(m);
-                self.materials.insert(collider, id);
-            }
-            None => {
-                self.materials.remove(collider);
-            }
+            Some(m) => self.laws.set_material(collider, m),
+            None => self.laws.clear_material(collider),
         }
     }
 
@@ -424,9 +431,7 @@ impl<H> StickSlip<H> {
         self.attached.set(collider, false);
         self.recycling.quiet.set(collider, false);
         self.recycling.poses.remove(collider);
-        self.materials.remove(collider);
-        self.pair_materials
-            .retain(|&(a, b), _| a != collider && b != collider);
+        self.laws.remove_collider(collider);
         self.vibrations.remove(collider);
         self.store.remove_collider(collider);
         self.reports
@@ -437,8 +442,7 @@ impl<H> StickSlip<H> {
     /// [`Self::attach`]). A handle whose index no collider set of this process could hold
     /// (≥ 2²⁴) is ignored.
     pub fn set_material(&mut self, collider: ColliderHandle, material: FrictionMaterial) {
-        let id = self.palette.id(material);
-        self.materials.insert(collider, id);
+        self.laws.set_material(collider, material);
         self.recycling.wake(collider);
     }
 
@@ -478,8 +482,10 @@ impl<H> StickSlip<H> {
         bodies: &RigidBodySet,
         colliders: &mut ColliderSet,
     ) {
+        // 2D has one friction model: Coulomb friction per contact point along one tangent.
+        #[cfg(not(dim2))]
         if params.friction_model != FrictionModel::Simplified {
-            self.warn_once(
+            self.warned.once(
                 Warning::FrictionModel,
                 &format!(
                     "stickslip: the world uses {:?}; stickslip keeps one friction state per \
@@ -493,7 +499,7 @@ impl<H> StickSlip<H> {
         let dt = params.dt as f64;
         // dt = 0 is a paused game (bevy's time scale 0): nothing to say.
         if !valid_dt(dt) && dt != 0.0 {
-            self.warn_once(
+            self.warned.once(
                 Warning::StepDt,
                 &format!(
                     "stickslip: a step of dt = {dt} s is outside [{MIN_DT}, {MAX_DT}] s; \

@@ -15,8 +15,9 @@
 //! leave the valid range (e.g. `Multiply` of two tiny coefficients) becomes plain Coulomb at
 //! the combined break-away coefficient, clamped into range, with a one-time warning.
 
-use crate::modifier::StickSlip;
-use rapier3d::prelude::*;
+use crate::collider_map::{ColliderBits, ColliderMap};
+use crate::warnings::{Warned, Warning};
+use rapier::prelude::*;
 use std::collections::HashMap;
 use stickslip_core::FrictionMaterial;
 use stickslip_core::law::{CombineRule, Coulomb, FrictionLaw, Law};
@@ -87,18 +88,98 @@ fn plain_law(mu: f64) -> Law {
     Law::Coulomb(Coulomb::clamped(mu))
 }
 
-impl<H> StickSlip<H> {
-    /// Whether stickslip decides the friction of the pair: one of them was attached.
-    pub(crate) fn owns(&self, c1: ColliderHandle, c2: ColliderHandle) -> bool {
-        self.attached.contains(c1) || self.attached.contains(c2)
+/// Every material in use and how a pair's law is found: the attached colliders' materials,
+/// per-pair overrides and the cache of combined laws.
+#[derive(Debug)]
+pub(crate) struct PairLaws {
+    /// Every material in use, by id (0: the default).
+    palette: Palette,
+    /// The material id of colliders attached with a material of their own.
+    materials: ColliderMap<u32>,
+    /// Per-pair overrides, by [`pair_key`].
+    pairs: PairMaterials,
+    /// Laws of combined materials.
+    combined: Combined,
+}
+
+impl PairLaws {
+    /// Laws whose attached colliders default to `default`.
+    pub fn new(default: FrictionMaterial) -> Self {
+        PairLaws {
+            palette: Palette::new(default),
+            materials: ColliderMap::default(),
+            pairs: PairMaterials::default(),
+            combined: Combined::default(),
+        }
     }
 
-    fn side(&self, colliders: &ColliderSet, h: ColliderHandle) -> (Side, CombineRule) {
+    pub fn default_material(&self) -> &FrictionMaterial {
+        self.palette.default_material()
+    }
+
+    /// The material a collider was given (`None`: the default).
+    pub fn material(&self, collider: ColliderHandle) -> Option<&FrictionMaterial> {
+        self.materials.get(collider).map(|&id| self.palette.get(id))
+    }
+
+    /// Every collider's own material.
+    pub fn materials(&self) -> impl Iterator<Item = (ColliderHandle, &FrictionMaterial)> {
+        self.materials
+            .iter()
+            .map(|(h, &id)| (h, self.palette.get(id)))
+    }
+
+    pub fn set_material(&mut self, collider: ColliderHandle, material: FrictionMaterial) {
+        let id = self.palette.id(material);
+        self.materials.insert(collider, id);
+    }
+
+    /// The collider goes back to the default material.
+    pub fn clear_material(&mut self, collider: ColliderHandle) {
+        self.materials.remove(collider);
+    }
+
+    pub fn set_pair(&mut self, a: ColliderHandle, b: ColliderHandle, material: FrictionMaterial) {
+        self.pairs.insert(pair_key(a, b), material);
+    }
+
+    pub fn remove_pair(
+        &mut self,
+        a: ColliderHandle,
+        b: ColliderHandle,
+    ) -> Option<FrictionMaterial> {
+        self.pairs.remove(&pair_key(a, b))
+    }
+
+    pub fn pair(&self, a: ColliderHandle, b: ColliderHandle) -> Option<&FrictionMaterial> {
+        self.pairs.get(&pair_key(a, b))
+    }
+
+    /// Every pair's own material.
+    pub fn pairs(
+        &self,
+    ) -> impl Iterator<Item = ((ColliderHandle, ColliderHandle), &FrictionMaterial)> {
+        self.pairs.iter().map(|(&k, m)| (k, m))
+    }
+
+    /// Drops the collider's own material and every pair material it is part of.
+    pub fn remove_collider(&mut self, collider: ColliderHandle) {
+        self.materials.remove(collider);
+        self.pairs
+            .retain(|&(a, b), _| a != collider && b != collider);
+    }
+
+    fn side(
+        &self,
+        attached: &ColliderBits,
+        colliders: &ColliderSet,
+        h: ColliderHandle,
+    ) -> (Side, CombineRule) {
         let c = colliders.get(h);
         let rule = c.map_or(CombineRule::Average, |c| {
             combine_rule(c.friction_combine_rule())
         });
-        if self.attached.contains(h) {
+        if attached.contains(h) {
             (
                 Side::Material(self.materials.get(h).copied().unwrap_or(0)),
                 rule,
@@ -116,21 +197,24 @@ impl<H> StickSlip<H> {
         }
     }
 
-    /// Runs `f` on the law of the pair `(c1, c2)` (which stickslip must own, see
-    /// [`Self::owns`]).
-    pub(crate) fn with_pair_law<R>(
+    /// Runs `f` on the law of the pair `(c1, c2)` (which must have an `attached` collider).
+    pub fn with_pair_law<R>(
         &self,
+        attached: &ColliderBits,
         colliders: &ColliderSet,
-        c1: ColliderHandle,
-        c2: ColliderHandle,
+        (c1, c2): (ColliderHandle, ColliderHandle),
+        warned: &Warned,
         f: impl FnOnce(&Law) -> R,
     ) -> R {
-        if !self.pair_materials.is_empty()
-            && let Some(m) = self.pair_materials.get(&pair_key(c1, c2))
+        if !self.pairs.is_empty()
+            && let Some(m) = self.pairs.get(&pair_key(c1, c2))
         {
             return f(&m.law);
         }
-        let ((s1, r1), (s2, r2)) = (self.side(colliders, c1), self.side(colliders, c2));
+        let ((s1, r1), (s2, r2)) = (
+            self.side(attached, colliders, c1),
+            self.side(attached, colliders, c2),
+        );
         let rule = r1.effective(r2);
         if let (Side::Material(a), Side::Material(b)) = (s1, s2)
             && a == b
@@ -156,8 +240,8 @@ impl<H> StickSlip<H> {
         let law = cache.entry(key).or_insert_with(|| {
             let (a, b) = (self.side_law(key.0), self.side_law(key.1));
             a.combine(&b, rule).unwrap_or_else(|e| {
-                self.warn_once(
-                    crate::warnings::Warning::Combine,
+                warned.once(
+                    Warning::Combine,
                     &format!(
                         "stickslip: the materials of colliders {c1:?} and {c2:?} do not \
                          combine by {rule:?} ({e}); the pair uses plain Coulomb friction"
@@ -176,18 +260,3 @@ pub(crate) type Combined = parking_lot::RwLock<HashMap<CombineKey, Law>>;
 
 /// Per-pair overrides.
 pub(crate) type PairMaterials = HashMap<(ColliderHandle, ColliderHandle), FrictionMaterial>;
-
-impl<H> StickSlip<H> {
-    /// The law stickslip gives the pair `(a, b)` of `colliders` (the pair's own material, or
-    /// the two sides combined; see [`StickSlip::attach`]); `None` when neither is attached
-    /// (the pair is rapier's and the wrapped hooks'). The same whichever is first.
-    pub fn pair_law(
-        &self,
-        colliders: &ColliderSet,
-        a: ColliderHandle,
-        b: ColliderHandle,
-    ) -> Option<Law> {
-        self.owns(a, b)
-            .then(|| self.with_pair_law(colliders, a, b, Law::clone))
-    }
-}

@@ -57,7 +57,7 @@ pub(crate) fn remember_warm_start(rec: &mut crate::contact_store::ContactRecord,
 /// The largest relative drift (m) over which rapier recycles a pair's contacts: the
 /// prediction distance (the window of a pair with nothing touching yet), or the recycle
 /// distance if smaller; 0 when rapier does not recycle.
-pub(crate) fn recycle_window(params: &rapier3d::prelude::IntegrationParameters) -> f32 {
+pub(crate) fn recycle_window(params: &rapier::prelude::IntegrationParameters) -> f32 {
     if params.contact_recycling {
         params
             .contact_recycle_distance()
@@ -73,8 +73,8 @@ pub(crate) use v035::RigidManifold;
 
 #[cfg(rapier_035)]
 mod v035 {
-    use rapier3d::geometry::SolverContacts;
-    use rapier3d::prelude::*;
+    use rapier::geometry::SolverContacts;
+    use rapier::prelude::*;
 
     /// The manifold of a hook call, read-only (0.36's `ctx.rigid()`).
     pub(crate) struct ManifoldRef<'s, 'a> {

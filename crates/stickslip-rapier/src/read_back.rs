@@ -3,7 +3,7 @@
 use crate::contact_store::ContactRecord;
 use crate::measure::{measure, point_velocity, world_centroid};
 use crate::report::ContactReport;
-use rapier3d::prelude::*;
+use rapier::prelude::*;
 use stickslip_core::law::Regime;
 
 /// The read-back of one manifold after the step (`moving_surfaces`: whether the wrapped hook
@@ -90,14 +90,14 @@ fn reset_report(rec: &ContactRecord, c1: ColliderHandle, c2: ColliderHandle) -> 
     ContactReport {
         collider1: c1,
         collider2: c2,
-        point: [0.0; 3],
-        normal: [0.0; 3],
+        point: [0.0; crate::report::DIM],
+        normal: [0.0; crate::report::DIM],
         regime: Regime::Sticking,
         mu: 0.0,
         limit: rec.state.limit as f64,
         normal_force: 0.0,
-        friction_force: [0.0; 3],
-        slip_velocity: [0.0; 3],
+        friction_force: [0.0; crate::report::DIM],
+        slip_velocity: [0.0; crate::report::DIM],
         dissipated_power: 0.0,
         reset: true,
     }

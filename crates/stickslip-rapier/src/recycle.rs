@@ -55,83 +55,13 @@
 //!
 //! With `contact_recycling` off, or a pause (dt = 0), every flag stays on.
 
-use crate::collider_map::{AtomicColliderBits, ColliderBits, ColliderMap};
+use crate::collider_map::{ColliderBits, ColliderMap};
+use crate::contact_store::is_composite;
 use crate::measure::measure;
 use crate::modifier::StickSlip;
-use rapier3d::prelude::*;
+use crate::quiet::{DRIFT_SHARE, MOTION_SHARE, QUIET_SHARE, QuietPose};
+use rapier::prelude::*;
 use stickslip_core::law::Regime;
-
-/// Share of the friction limit below which a held contact is quiet: the solver held it (the
-/// saturation margin of `stickslip_core::contact::step_contact`).
-pub(crate) const QUIET_SHARE: f64 = 1.0 - stickslip_core::contact::SATURATION;
-/// Share of the recycle window a quiet body may drift (translation, plus the rotation's chord
-/// at the collider's reach) before its contacts are hooked again.
-pub(crate) const DRIFT_SHARE: f32 = 0.25;
-/// Share of the recycle window a body may move in one step and still be quiet.
-pub(crate) const MOTION_SHARE: f32 = 0.05;
-
-/// Which attached colliders have their stickslip flag off, and what decides it.
-#[derive(Debug, Default)]
-pub(crate) struct Recycling {
-    /// Attached colliders whose stickslip hook flag is off: their contacts are quiet.
-    pub quiet: ColliderBits,
-    /// Where each quiet collider's body (or the collider, without one) was when its flag
-    /// went off, and the collider's reach from that pose's origin (m).
-    pub poses: ColliderMap<QuietPose>,
-    /// Colliders a hooked manifold found not quiet during the step (any thread).
-    pub active: AtomicColliderBits,
-    /// Colliders to hook again at the next `begin_step` (a material or source changed).
-    pub wake: ColliderBits,
-    /// Every quiet collider is to be hooked again at the next `begin_step`.
-    pub wake_all: bool,
-    /// Recycle window (m) of the running step; 0 when rapier does not recycle.
-    pub window: f32,
-    /// Scratch: the quiet set being decided (kept to reuse its memory).
-    next: ColliderBits,
-    /// Scratch: candidates to go quiet whose body is fixed or asleep (or who have none),
-    /// found once per step instead of once per pair.
-    still: ColliderBits,
-    /// Scratch: candidates to go quiet that moved more than [`MOTION_SHARE`] of the window in
-    /// the step, found once per step instead of once per pair.
-    moving: ColliderBits,
-}
-
-impl Recycling {
-    /// Colliders whose contacts must be hooked at the next step.
-    pub fn wake(&mut self, collider: ColliderHandle) {
-        self.wake.set(collider, true);
-    }
-}
-
-/// Where a quiet collider's body (or the collider, without one) was when its flag went off,
-/// and the collider's reach from that pose's origin (m): 32 bytes as plain floats, where a
-/// `Pose` with its SIMD alignment made the map's slot 80.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct QuietPose {
-    pub translation: [f32; 3],
-    /// Unit quaternion, x y z w.
-    pub rotation: [f32; 4],
-    pub reach: f32,
-}
-
-impl QuietPose {
-    pub fn new(pose: &Pose, reach: f32) -> Self {
-        let q = pose.rotation;
-        QuietPose {
-            translation: pose.translation.to_array(),
-            rotation: [q.x, q.y, q.z, q.w],
-            reach,
-        }
-    }
-
-    pub fn pose(&self) -> Pose {
-        let [x, y, z, w] = self.rotation;
-        Pose::from_parts(
-            Vector::from_array(self.translation),
-            Rotation::from_xyzw(x, y, z, w),
-        )
-    }
-}
 
 /// The pose the drift of `collider` is measured on (its body's, or its own without one) and
 /// the collider's reach from that pose's origin.
@@ -170,17 +100,44 @@ fn reach_of(
 
 /// How far any point within `reach` of `a`'s origin moved to `b` (translation plus chord).
 fn drift(a: &Pose, b: &Pose, reach: f32) -> f32 {
-    let turn = (b.rotation * a.rotation.inverse()).normalize();
-    // |sin(θ/2)| is the length of the quaternion's vector part; the chord is 2 r sin(θ/2).
-    let half_sin = Vector::new(turn.x, turn.y, turn.z).length();
+    // The chord is 2 r |sin(θ/2)|.
+    let half_sin = half_turn_sine(a, b);
     (b.translation - a.translation).length() + 2.0 * half_sin * reach
+}
+
+/// |sin(θ/2)| of the rotation from `a` to `b`.
+fn half_turn_sine(a: &Pose, b: &Pose) -> f32 {
+    #[cfg(not(dim2))]
+    {
+        // The length of the quaternion's vector part.
+        let turn = (b.rotation * a.rotation.inverse()).normalize();
+        Vector::new(turn.x, turn.y, turn.z).length()
+    }
+    #[cfg(dim2)]
+    {
+        // cos θ of the turn, from the unit complexes: sin²(θ/2) = (1 − cos θ)/2.
+        let cos = a.rotation.re * b.rotation.re + a.rotation.im * b.rotation.im;
+        ((1.0 - cos).max(0.0) / 2.0).sqrt()
+    }
+}
+
+/// The speed of the body's rotation (rad/s).
+fn turn_rate(body: &RigidBody) -> f32 {
+    #[cfg(not(dim2))]
+    {
+        body.angvel().length()
+    }
+    #[cfg(dim2)]
+    {
+        body.angvel().abs()
+    }
 }
 
 /// How far the collider's material points can move in one step at the body's velocity.
 fn step_motion(bodies: &RigidBodySet, collider: &Collider, reach: f32, dt: f32) -> f32 {
     match collider.parent().and_then(|h| bodies.get(h)) {
         Some(b) if !b.is_fixed() && !b.is_sleeping() => {
-            (b.linvel().length() + b.angvel().length() * reach) * dt
+            (b.linvel().length() + turn_rate(b) * reach) * dt
         }
         _ => 0.0,
     }
@@ -393,9 +350,7 @@ impl<H> StickSlip<H> {
                         let composite = *patches.get_or_insert_with(|| {
                             clustering
                                 && [c1, c2].into_iter().any(|h| {
-                                    colliders
-                                        .get(h)
-                                        .is_some_and(|c| crate::hook::is_composite(c.shape()))
+                                    colliders.get(h).is_some_and(|c| is_composite(c.shape()))
                                 })
                         });
                         if composite {
@@ -474,15 +429,16 @@ mod tests {
 
     #[test]
     fn drift_adds_the_rotation_chord_at_the_reach() {
-        let a = Pose::from_translation(Vector::new(1.0, 2.0, 3.0));
+        let a = Pose::from_translation(crate::tangent::vector([1.0, 2.0, 3.0]));
         let mut b = a;
         b.translation.x += 0.001;
         assert!((drift(&a, &b, 10.0) - 0.001).abs() < 1e-6);
-        // A quarter turn about y: chord 2 r sin(π/4) = √2 r.
-        let b = Pose::from_parts(
-            a.translation,
-            Rotation::from_axis_angle(Vector::Y, std::f32::consts::FRAC_PI_2),
-        );
+        // A quarter turn: chord 2 r sin(π/4) = √2 r.
+        #[cfg(not(dim2))]
+        let quarter = Rotation::from_axis_angle(Vector::Y, std::f32::consts::FRAC_PI_2);
+        #[cfg(dim2)]
+        let quarter = Rotation::new(std::f32::consts::FRAC_PI_2);
+        let b = Pose::from_parts(a.translation, quarter);
         assert!((drift(&a, &b, 2.0) - 2.0 * std::f32::consts::SQRT_2).abs() < 1e-5);
     }
 }

@@ -1,8 +1,15 @@
 //! What the modifier reports after each step: per contact and per world.
 
-use rapier3d::prelude::ColliderHandle;
+use rapier::prelude::ColliderHandle;
 use serde::Serialize;
 use stickslip_core::law::Regime;
+
+/// Components of a world vector in a report: 3 (x, y, z) in 3D, 2 (x, y) in 2D.
+#[cfg(not(dim2))]
+pub const DIM: usize = 3;
+/// Components of a world vector in a report: 3 (x, y, z) in 3D, 2 (x, y) in 2D.
+#[cfg(dim2)]
+pub const DIM: usize = 2;
 
 /// One contact manifold after a step.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -15,9 +22,9 @@ pub struct ContactReport {
     pub collider2: ColliderHandle,
     /// Contact point (m, world): the centroid of the manifold's solver contacts after the
     /// step, midway between the two surfaces.
-    pub point: [f32; 3],
+    pub point: [f32; DIM],
     /// Contact normal (world, from collider 1 towards collider 2).
-    pub normal: [f32; 3],
+    pub normal: [f32; DIM],
     /// Regime the law reported this step.
     pub regime: Regime,
     /// Friction state |μ⃗| = |s⃗|/F_n of the law.
@@ -27,9 +34,9 @@ pub struct ContactReport {
     /// Normal force over the step (N), from the solver's impulses.
     pub normal_force: f64,
     /// Friction force on collider 2's body (N, world), from the solver's impulses.
-    pub friction_force: [f32; 3],
+    pub friction_force: [f32; DIM],
     /// Slip velocity of collider 2 relative to collider 1's surface after the step (m/s).
-    pub slip_velocity: [f32; 3],
+    pub slip_velocity: [f32; DIM],
     /// Power dissipated by friction, −F_f·ġ ≥ 0 (W).
     pub dissipated_power: f64,
     /// The contact's inputs were not usable this step (non-finite or beyond f32 velocities,
@@ -44,7 +51,7 @@ impl ContactReport {
     pub fn effective_mu(&self) -> f64 {
         if self.normal_force > 0.0 {
             let f = self.friction_force;
-            ((f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) as f64).sqrt() / self.normal_force
+            (f.iter().map(|x| x * x).sum::<f32>() as f64).sqrt() / self.normal_force
         } else {
             0.0
         }

@@ -14,6 +14,7 @@
 //!
 //! ## Save and resume a world
 //! ```
+//! # extern crate rapier as rapier3d;
 //! use rapier3d::prelude::*;
 //! use stickslip_core::law::{Coulomb, Law};
 //! use stickslip_rapier::{StickSlip, WorldSnapshot};
@@ -73,7 +74,7 @@ use crate::contact_store::{
 use crate::measure::Measured;
 use crate::modifier::{Clock, ReadBack, StickSlip, StickSlipConfig};
 use crate::report::{ContactReport, WorldTotals};
-use rapier3d::prelude::*;
+use rapier::prelude::*;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use std::io::{Read, Write};
 use stickslip_core::FrictionMaterial;
@@ -544,14 +545,14 @@ struct TotalsSnapshot {
 struct ReportSnapshot {
     collider1: Handle,
     collider2: Handle,
-    point: [f32; 3],
-    normal: [f32; 3],
+    point: [f32; crate::report::DIM],
+    normal: [f32; crate::report::DIM],
     regime: Regime,
     mu: f64,
     limit: f64,
     normal_force: f64,
-    friction_force: [f32; 3],
-    slip_velocity: [f32; 3],
+    friction_force: [f32; crate::report::DIM],
+    slip_velocity: [f32; crate::report::DIM],
     dissipated_power: f64,
     reset: bool,
 }
@@ -746,13 +747,13 @@ impl<H> StickSlip<H> {
         let t = &self.totals;
         StickSlipSnapshot {
             config: self.config,
-            default_material: self.palette.default_material().clone(),
+            default_material: self.laws.default_material().clone(),
             materials: self
-                .materials
-                .iter()
-                .map(|(h, &id)| Entry {
+                .laws
+                .materials()
+                .map(|(h, m)| Entry {
                     collider: h.into(),
-                    value: self.palette.get(id).clone(),
+                    value: m.clone(),
                 })
                 .collect(),
             vibrations: self
@@ -767,9 +768,9 @@ impl<H> StickSlip<H> {
             attached: self.attached.indices().collect(),
             pair_materials: {
                 let mut pairs: Vec<PairEntry> = self
-                    .pair_materials
-                    .iter()
-                    .map(|(&(a, b), m)| PairEntry {
+                    .laws
+                    .pairs()
+                    .map(|((a, b), m)| PairEntry {
                         colliders: [a.into(), b.into()],
                         material: m.clone(),
                     })
@@ -819,7 +820,7 @@ impl<H> StickSlip<H> {
                     .map(|(&user_data, m)| PatchSnapshot {
                         user_data,
                         normal_force: m.normal_force,
-                        mu: m.mu.to_array(),
+                        mu: crate::tangent::world(m.mu),
                         warm_start_impulse: m.warm_start_impulse,
                     })
                     .collect();
@@ -940,7 +941,7 @@ impl<H> StickSlip<H> {
                 m.recycling.active.cover(h);
                 m.recycling.poses.insert(
                     h,
-                    crate::recycle::QuietPose {
+                    crate::quiet::QuietPose {
                         translation: q.translation,
                         rotation: q.rotation,
                         reach: q.reach,
@@ -970,7 +971,7 @@ impl<H> StickSlip<H> {
                 p.user_data,
                 Measured {
                     normal_force: p.normal_force,
-                    mu: Vector::from_array(p.mu),
+                    mu: crate::tangent::vector(p.mu),
                     warm_start_impulse: p.warm_start_impulse,
                 },
             );

@@ -1,7 +1,7 @@
 //! The one place where rapier's `Vector` (f32, 3D or 2D) meets the kernel's world vectors
 //! (`[f32; 3]`, z = 0 in 2D) and a contact's tangent plane (3D) or tangent line (2D).
 
-use rapier3d::prelude::Vector;
+use rapier::prelude::Vector;
 use stickslip_core::contact::{TangentBasis, World};
 
 /// The kernel's form of a world vector.

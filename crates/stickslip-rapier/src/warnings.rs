@@ -1,7 +1,6 @@
 //! One-time warnings through the `log` facade (which rapier and bevy users already route):
 //! stickslip never falls back to plain rapier silently.
 
-use crate::modifier::StickSlip;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 /// What stickslip warns about, once per modifier each.
@@ -10,6 +9,7 @@ pub(crate) enum Warning {
     /// The hook ran with no `begin_step` since the last `end_step`.
     NoBeginStep,
     /// The world's `FrictionModel` is not the one stickslip realizes its law with.
+    #[cfg(not(dim2))]
     FrictionModel,
     /// Two materials did not combine into a valid law.
     Combine,
@@ -21,10 +21,10 @@ pub(crate) enum Warning {
 #[derive(Debug, Default)]
 pub(crate) struct Warned([AtomicBool; 4]);
 
-impl<H> StickSlip<H> {
+impl Warned {
     /// Logs `message` at warn level the first time `warning` occurs.
-    pub(crate) fn warn_once(&self, warning: Warning, message: &str) {
-        if !self.warned.0[warning as usize].swap(true, Ordering::Relaxed) {
+    pub(crate) fn once(&self, warning: Warning, message: &str) {
+        if !self.0[warning as usize].swap(true, Ordering::Relaxed) {
             log::warn!("{message}");
         }
     }

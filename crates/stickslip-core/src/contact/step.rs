@@ -295,6 +295,18 @@ pub fn step_contact(rec: &mut ContactState, input: &ContactInput) -> ContactOutp
             GIVING
         } else if was_holding && input.warm_start < WARM {
             FORMING_STEPS
+        } else if forming
+            && rec.forming == 1
+            && reached
+            && speed > 0.0
+            && can_stick
+            && source.is_none()
+        {
+            // The last forming step still brakes, at the limit, the slip the cold solve let
+            // through (a load close to the capacity brakes it slowly: a box put down on a
+            // slope at 0.95 of break-away takes three steps): the contact gives on while
+            // that slip shrinks (see `gives`).
+            GIVING
         } else if giving_before {
             0
         } else {
@@ -573,6 +585,43 @@ mod tests {
         let mut rec = held(&law, [0.05, 0.0]);
         let out = step_contact(&mut rec, &input(&law, &b, [0.5, 0.0], [1.0, 0.0]));
         assert!(!out.holding);
+    }
+
+    #[test]
+    fn a_forming_contact_brakes_its_landing_slip_and_yields_only_to_a_growing_one() {
+        // A box put down on a slope at 0.95 of break-away (μ_k 0.4 < μ_s 0.5): the cold solve
+        // lets a slip through that the solver brakes at the limit over three steps, as the
+        // load leaves little margin. The contact holds at its capacity while that slip
+        // shrinks; a slip that keeps growing after forming is the law's (it slides).
+        let b = basis();
+        let law = Law::elasto_plastic(1e4, 0.5, 0.55, Curve::constant(0.4).unwrap()).unwrap();
+        let step = |rec: &mut ContactState, mu: f64, v: f64| {
+            let mut i = input(&law, &b, [mu, 0.0], [v, 0.0]);
+            i.normal_force = 2215.0;
+            i.inv_mass = 1.0 / 250.0;
+            step_contact(rec, &i)
+        };
+        for (slips, holds) in [
+            ([0.0108, 0.0071, 0.0034, 0.0], true),
+            ([0.0108, 0.0120, 0.0140, 0.0160], false),
+        ] {
+            let mut rec = ContactState::default();
+            let mut first = input(&law, &b, [0.0; 2], [0.0; 2]);
+            first.normal_force = 0.0;
+            step_contact(&mut rec, &first);
+            let mut out = None;
+            for v in slips {
+                out = Some(step(&mut rec, if v > 0.0 { 0.5 } else { 0.475 }, v));
+            }
+            let out = out.unwrap();
+            assert_eq!(out.holding, holds, "{slips:?}");
+            if holds {
+                assert_eq!(out.limit, 0.5, "{slips:?}");
+                assert_ne!(rec.regime, Regime::Sliding.code());
+            } else {
+                assert!(out.limit < 0.5, "the law yields: {}", out.limit);
+            }
+        }
     }
 
     #[test]

@@ -22,7 +22,7 @@ mod elasto_plastic;
 mod physical;
 mod regularized;
 
-pub use combine::CombineRule;
+pub use crate::combine_rule::CombineRule;
 pub use coulomb::Coulomb;
 pub use elasto_plastic::{ElastoPlastic, EpVariant};
 pub use physical::Physical;

@@ -2,7 +2,7 @@
 //! against analytic results (a box on an incline, on a belt, dragged over a vibrating plate, the
 //! seed's Example 1), plus [`Conveyor`], a surface-velocity hook to wrap.
 
-use rapier3d::prelude::*;
+use rapier::prelude::*;
 
 pub mod ordinary;
 

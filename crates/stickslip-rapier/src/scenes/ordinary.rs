@@ -4,7 +4,7 @@
 //! `mu` (rapier's own friction, used when nothing is attached); gravity is tilted about z so a
 //! slope of tan θ runs down along +x.
 
-use rapier3d::prelude::*;
+use rapier::prelude::*;
 
 /// A world with its ground and the bodies a scene measures.
 pub struct OrdinaryScene {
