@@ -36,3 +36,5 @@ cargo test --workspace
 # (the windowed examples are built and run by scripts/bevy_screenshot.sh in .ci/run).
 cargo test -p stickslip-bevy --features debug,scenario
 cargo test -p stickslip --features parallel --test rapier_many_contacts --test rapier_popov --test rapier_snapshot --test rapier_drive --test shared_world --test rapier_recycling --test rapier_load_jump
+# The 2D adapter (rapier2d) with rapier's multi-threaded `parallel` feature as well.
+cargo test -p stickslip-rapier2d --features parallel --test snapshot --test shared_world --test stacks

@@ -1,7 +1,6 @@
 //! The rapier hooks of a bracketed step: the app's own `BevyPhysicsHooks` first on the pairs
-//! the app flagged, then the surface velocities, then stickslip on the pairs it was given.
+//! the app flagged, then stickslip (the surface velocities, then its law on its pairs).
 
-use bevy::prelude::*;
 use bevy_rapier3d::pipeline::{ContactModificationContextView, PairFilterContextView};
 use bevy_rapier3d::prelude::BevyPhysicsHooks;
 use bevy_rapier3d::rapier::geometry::{ColliderHandle, SolverFlags};
@@ -9,13 +8,12 @@ use bevy_rapier3d::rapier::pipeline::ActiveHooks;
 use bevy_rapier3d::rapier::pipeline::{
     ContactModificationContext, PairFilterContext, PhysicsHooks,
 };
-use std::collections::{HashMap, HashSet};
+use std::collections::HashSet;
 use stickslip_rapier_035::StickSlip;
 
-/// The app's hooks as rapier hooks, then the surface velocities.
+/// The app's hooks as rapier hooks.
 pub(crate) struct UserHooks<'a, T> {
     pub(crate) user: &'a T,
-    pub(crate) surfaces: &'a HashMap<ColliderHandle, Vec3>,
     /// The colliders whose hook flag is stickslip's, not the app's.
     pub(crate) hook_flags: &'a HashSet<ColliderHandle>,
 }
@@ -45,23 +43,9 @@ impl<T: BevyPhysicsHooks> PhysicsHooks for UserHooks<'_, T> {
     }
 
     fn modify_solver_contacts(&self, context: &mut ContactModificationContext) {
-        let (c1, c2) = (context.collider1, context.collider2);
         if self.apps_pair(context) {
             self.user
                 .modify_solver_contacts(ContactModificationContextView { raw: &mut *context });
-        }
-        if self.surfaces.is_empty() {
-            return;
-        }
-        // tangent_velocity is the target velocity of collider 2 relative to collider 1.
-        let v = self.surfaces.get(&c1).copied().unwrap_or(Vec3::ZERO)
-            - self.surfaces.get(&c2).copied().unwrap_or(Vec3::ZERO);
-        if v != Vec3::ZERO {
-            let n = *context.normal;
-            let v = v - n * n.dot(v);
-            for c in context.solver_contacts.iter_mut() {
-                c.tangent_velocity += v;
-            }
         }
     }
 }

@@ -17,8 +17,6 @@ pub struct StickSlipRapier {
     pub active: bool,
     pub(crate) attached: HashMap<Entity, ColliderHandle>,
     pub(crate) vibrating: HashMap<Entity, ColliderHandle>,
-    /// Surface velocities by collider.
-    pub(crate) surfaces: HashMap<ColliderHandle, Vec3>,
     pub(crate) surface_entities: HashMap<Entity, ColliderHandle>,
     /// The colliders whose `MODIFY_SOLVER_CONTACTS` flag is stickslip's, not the app's (the
     /// app's hooks do not see their pairs unless the other collider is the app's).
@@ -32,7 +30,6 @@ impl StickSlipRapier {
             active: true,
             attached: HashMap::new(),
             vibrating: HashMap::new(),
-            surfaces: HashMap::new(),
             surface_entities: HashMap::new(),
             hook_flags: HashSet::new(),
         }

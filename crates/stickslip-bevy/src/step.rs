@@ -14,7 +14,7 @@ use bevy_rapier3d::plugin::context::{
     RapierRigidBodySet, SimulationToRenderTime,
 };
 use bevy_rapier3d::prelude::*;
-use std::collections::{HashMap, HashSet};
+use std::collections::HashSet;
 
 /// The rapier steps of one frame, exactly as bevy_rapier 0.36's `step_simulation` runs them.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -134,7 +134,7 @@ pub(crate) fn step_simulation_bracketed<H>(
     let user = &*user;
     let state = &mut *state;
     let out = &mut out;
-    let (no_surfaces, no_flags) = (HashMap::new(), HashSet::new());
+    let no_flags = HashSet::new();
     for (mut sim, mut colliders, mut joints, mut bodies, config, mut to_render, is_default) in
         &mut contexts
     {
@@ -159,26 +159,26 @@ pub(crate) fn step_simulation_bracketed<H>(
             }
             for _ in 0..steps.substeps {
                 if bracket {
-                    keep_awake(state, sim, colliders, bodies);
+                    state.modifier.wake_driven(
+                        &sim.narrow_phase,
+                        &colliders.colliders,
+                        &mut bodies.bodies,
+                    );
                     let mut params = sim.integration_parameters;
                     params.dt = steps.step_dt;
                     state
                         .modifier
                         .begin_step(&params, &bodies.bodies, &mut colliders.colliders);
                 }
-                // Surfaces and stickslip's hook flags are the default context's handles.
-                let (surfaces, hook_flags) = if is_default {
-                    (&state.surfaces, &state.hook_flags)
+                // stickslip's hook flags are the default context's handles.
+                let hook_flags = if is_default {
+                    &state.hook_flags
                 } else {
-                    (&no_surfaces, &no_flags)
+                    &no_flags
                 };
                 let hooks = StepHooks {
                     stickslip: bracket.then_some(&state.modifier),
-                    user: UserHooks {
-                        user,
-                        surfaces,
-                        hook_flags,
-                    },
+                    user: UserHooks { user, hook_flags },
                 };
                 // One rapier step: bevy_rapier's Fixed mode with one substep of this dt.
                 sim.step_simulation(
@@ -215,36 +215,6 @@ pub(crate) fn step_simulation_bracketed<H>(
             }
         }
         sim.integration_parameters.dt = steps.frame_dt;
-    }
-}
-
-/// Keeps the bodies touching a vibrating or moving surface awake: such a surface is never at
-/// rest, though rapier sees no force on what it carries (a part conveyed at a few cm/s by a
-/// vibration would otherwise fall asleep under rapier's sleep threshold and stop dead).
-fn keep_awake(
-    state: &StickSlipRapier,
-    sim: &RapierContextSimulation,
-    colliders: &RapierContextColliders,
-    bodies: &mut RapierRigidBodySet,
-) {
-    let surfaces = state.vibrating.values().chain(state.surfaces.keys());
-    for &surface in surfaces {
-        for pair in sim.narrow_phase.contact_pairs_with(surface) {
-            if !pair.has_any_active_contact() {
-                continue;
-            }
-            let other = if pair.collider1 == surface {
-                pair.collider2
-            } else {
-                pair.collider1
-            };
-            let parent = colliders.colliders.get(other).and_then(|c| c.parent());
-            if let Some(body) = parent.and_then(|h| bodies.bodies.get_mut(h))
-                && body.is_dynamic()
-            {
-                body.wake_up(true);
-            }
-        }
     }
 }
 

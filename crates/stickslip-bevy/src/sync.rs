@@ -97,7 +97,8 @@ fn hand_flag_to_modifier(
     colliders: &mut ColliderSet,
     h: ColliderHandle,
 ) {
-    let app_or_surface = !state.hook_flags.contains(&h) || state.surfaces.contains_key(&h);
+    let app_or_surface =
+        !state.hook_flags.contains(&h) || state.modifier.surface_velocity(h).is_some();
     state
         .modifier
         .set_user_hook_flag(colliders, h, app_or_surface);
@@ -129,7 +130,8 @@ pub(crate) fn sync_vibrations(
     }
 }
 
-/// Surface velocities for the hooks (and the hook flag on their colliders).
+/// Surface velocities onto the modifier (which applies them on every pair of the default
+/// context and keeps what they carry awake), and the hook flag on their colliders.
 #[allow(clippy::type_complexity)]
 pub(crate) fn sync_surfaces(
     mut state: ResMut<StickSlipRapier>,
@@ -158,7 +160,7 @@ pub(crate) fn sync_surfaces(
     for (entity, v, h, hooks, link) in &changed {
         if in_default(link, default) {
             claim_hook_flag(state, colliders, h.0, hooks);
-            state.surfaces.insert(h.0, v.0);
+            state.modifier.set_surface_velocity(colliders, h.0, v.0);
             state.surface_entities.insert(entity, h.0);
             hand_flag_to_modifier(state, colliders, h.0);
         }
@@ -249,7 +251,7 @@ pub(crate) fn removals(
             && !kept(entity, h, 2)
         {
             state.surface_entities.remove(&entity);
-            state.surfaces.remove(&h);
+            state.modifier.remove_surface_velocity(colliders, h);
             release(state, colliders, entity, h);
         }
     }

@@ -11,11 +11,16 @@ const MAX_INDEX: u32 = 1 << 24;
 #[derive(Debug, Clone)]
 pub(crate) struct ColliderMap<T> {
     slots: Vec<Option<(u32, T)>>,
+    /// Occupied slots (the hook asks for emptiness once per manifold).
+    len: usize,
 }
 
 impl<T> Default for ColliderMap<T> {
     fn default() -> Self {
-        ColliderMap { slots: Vec::new() }
+        ColliderMap {
+            slots: Vec::new(),
+            len: 0,
+        }
     }
 }
 
@@ -30,17 +35,21 @@ impl<T> ColliderMap<T> {
         if self.slots.len() <= i {
             self.slots.resize_with(i + 1, || None);
         }
-        self.slots[i]
-            .replace((generation, value))
-            .filter(|(g, _)| *g == generation)
-            .map(|(_, v)| v)
+        let old = self.slots[i].replace((generation, value));
+        if old.is_none() {
+            self.len += 1;
+        }
+        old.filter(|(g, _)| *g == generation).map(|(_, v)| v)
     }
 
     pub fn remove(&mut self, handle: ColliderHandle) -> Option<T> {
         let (i, generation) = handle.0.into_raw_parts();
         let slot = self.slots.get_mut(i as usize)?;
         match slot {
-            Some((g, _)) if *g == generation => slot.take().map(|(_, v)| v),
+            Some((g, _)) if *g == generation => {
+                self.len -= 1;
+                slot.take().map(|(_, v)| v)
+            }
             _ => None,
         }
     }
@@ -51,6 +60,11 @@ impl<T> ColliderMap<T> {
             Some((g, v)) if *g == generation => Some(v),
             _ => None,
         }
+    }
+
+    /// Whether no collider has a value.
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
     }
 
     /// The entries, by increasing arena index.

@@ -7,12 +7,14 @@
 //! rapier keeps one friction coefficient and (by default in 3D, `FrictionModel::Simplified`)
 //! one friction constraint per manifold, so stickslip keeps one friction state per manifold.
 
+use crate::collider_map::ColliderMap;
 use crate::contact_store::{ContactKey, ContactRecord, ManifoldPart, is_composite};
 use crate::measure::{Measured, centroid, measure, point_velocity};
 use crate::modifier::StickSlip;
 use crate::quiet::QUIET_SHARE;
 #[cfg(rapier_035)]
 use crate::rapier_compat::RigidManifold;
+use crate::surface::surface_target;
 use crate::warnings::Warning;
 use rapier::prelude::*;
 use std::sync::atomic::Ordering;
@@ -52,16 +54,30 @@ fn inv_mass(bodies: &RigidBodySet, h: Option<RigidBodyHandle>) -> f64 {
         })
 }
 
-/// The wrapped hooks, called only on the user's pairs (`theirs`).
+/// The wrapped hooks, called only on the user's pairs (`theirs`), then the surface
+/// velocities (see `surface`): what every pair gets before stickslip's law.
 struct UsersPairsOnly<'a, I: ?Sized> {
     hooks: &'a I,
     theirs: bool,
+    surfaces: &'a ColliderMap<Vector>,
 }
 
 impl<I: PhysicsHooks + ?Sized> UsersPairsOnly<'_, I> {
     fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
         if self.theirs {
             self.hooks.modify_solver_contacts(ctx);
+        }
+        if self.surfaces.is_empty() {
+            return;
+        }
+        let pair = (ctx.collider1, ctx.collider2);
+        if let Some(r) = ctx.rigid_mut() {
+            let v = surface_target(self.surfaces, pair, *r.normal);
+            if v != Vector::ZERO {
+                for c in r.solver_contacts.iter_mut() {
+                    c.tangent_velocity += v;
+                }
+            }
         }
     }
 }
@@ -86,7 +102,7 @@ impl<H> StickSlip<H> {
     fn hooked_by_user(&self, ctx: &ContactModificationContext) -> bool {
         // The bits first: a pair of colliders stickslip flagged needs no collider lookup.
         [ctx.collider1, ctx.collider2].into_iter().any(|h| {
-            !(self.flagged.contains(h) && self.attached.contains(h))
+            !self.flagged.contains(h)
                 && ctx.colliders.get(h).is_some_and(|c| {
                     c.active_hooks()
                         .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
@@ -110,6 +126,7 @@ impl<H> StickSlip<H> {
         let inner = &UsersPairsOnly {
             hooks: inner,
             theirs: self.hooked_by_user(ctx),
+            surfaces: &self.surfaces,
         };
         // Pairs without an attached collider are the user's alone.
         if !self.owns(ctx.collider1, ctx.collider2) {

@@ -65,6 +65,7 @@ mod report;
 #[doc(hidden)]
 pub mod scenes;
 pub mod snapshot;
+mod surface;
 mod tangent;
 mod warnings;
 

@@ -157,6 +157,8 @@ pub struct StickSlip<H = ()> {
     /// Colliders attached (their pairs are stickslip's), default material or not.
     pub(crate) attached: ColliderBits,
     pub(crate) vibrations: ColliderMap<VibrationSource>,
+    /// Surface velocities (see `surface`).
+    pub(crate) surfaces: ColliderMap<Vector>,
     /// Colliders whose hook flag `attach` turned on.
     pub(crate) flagged: ColliderBits,
     pub(crate) warned: Warned,
@@ -201,6 +203,7 @@ impl<H> StickSlip<H> {
             attached: ColliderBits::default(),
             warned: Warned::default(),
             vibrations: ColliderMap::default(),
+            surfaces: ColliderMap::default(),
             flagged: ColliderBits::default(),
             store: ContactStore::default(),
             clock: Clock::default(),
@@ -367,7 +370,8 @@ impl<H> StickSlip<H> {
             // generations: detach a collider before removing it.)
             let theirs = c
                 .active_hooks()
-                .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS);
+                .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
+                && !self.flagged.contains(collider);
             if !self.attached.contains(collider) || !theirs {
                 self.flagged.set(collider, !theirs);
             }
@@ -417,7 +421,8 @@ impl<H> StickSlip<H> {
     /// hooks). Its contacts then behave exactly as in plain rapier.
     pub fn detach(&mut self, colliders: &mut ColliderSet, collider: ColliderHandle) {
         if let Some(c) = colliders.get_mut(collider) {
-            if self.flagged.contains(collider) {
+            // A moving surface keeps the flag its velocity needs.
+            if self.flagged.contains(collider) && self.surfaces.get(collider).is_none() {
                 self.flagged.set(collider, false);
                 c.set_active_hooks(c.active_hooks() - ActiveHooks::MODIFY_SOLVER_CONTACTS);
             }
@@ -444,6 +449,82 @@ impl<H> StickSlip<H> {
     pub fn set_material(&mut self, collider: ColliderHandle, material: FrictionMaterial) {
         self.laws.set_material(collider, material);
         self.recycling.wake(collider);
+    }
+
+    /// Gives `collider`'s surface a velocity relative to its body (m/s, world axes; a
+    /// conveyor belt): the target tangent velocity of each of its contacts, on every pair —
+    /// stickslip's or not — after the user's own hooks (see the `surface` module). Turns the
+    /// collider's `MODIFY_SOLVER_CONTACTS` hook on (stickslip's, off again with
+    /// [`Self::remove_surface_velocity`] unless the collider is attached or the flag was the
+    /// user's), and keeps the bodies it carries awake ([`Self::wake_driven`]). A zero velocity
+    /// removes it. A handle not in `colliders` is a no-op.
+    pub fn set_surface_velocity(
+        &mut self,
+        colliders: &mut ColliderSet,
+        collider: ColliderHandle,
+        velocity: Vector,
+    ) {
+        if velocity == Vector::ZERO || !velocity.is_finite() {
+            self.remove_surface_velocity(colliders, collider);
+            return;
+        }
+        let Some(c) = colliders.get_mut(collider) else {
+            return;
+        };
+        if !c
+            .active_hooks()
+            .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
+        {
+            c.set_active_hooks(c.active_hooks() | ActiveHooks::MODIFY_SOLVER_CONTACTS);
+            self.flagged.set(collider, true);
+        }
+        self.surfaces.insert(collider, velocity);
+        self.recycling.wake(collider);
+    }
+
+    /// Stops `collider`'s surface (see [`Self::set_surface_velocity`]); returns the velocity
+    /// it had.
+    pub fn remove_surface_velocity(
+        &mut self,
+        colliders: &mut ColliderSet,
+        collider: ColliderHandle,
+    ) -> Option<Vector> {
+        let v = self.surfaces.remove(collider)?;
+        if !self.attached.contains(collider)
+            && self.flagged.contains(collider)
+            && let Some(c) = colliders.get_mut(collider)
+        {
+            c.set_active_hooks(c.active_hooks() - ActiveHooks::MODIFY_SOLVER_CONTACTS);
+            self.flagged.set(collider, false);
+        }
+        self.recycling.wake(collider);
+        Some(v)
+    }
+
+    /// The surface velocity of `collider` ([`Self::set_surface_velocity`]).
+    pub fn surface_velocity(&self, collider: ColliderHandle) -> Option<Vector> {
+        self.surfaces.get(collider).copied()
+    }
+
+    /// Wakes the dynamic bodies touching a moving surface or a collider with a vibration
+    /// source: such a surface is never at rest, though rapier sees no force on what it
+    /// carries. [`Self::step`] does it before every step; call it before
+    /// [`Self::begin_step`] when stepping rapier yourself.
+    pub fn wake_driven(
+        &self,
+        narrow_phase: &NarrowPhase,
+        colliders: &ColliderSet,
+        bodies: &mut RigidBodySet,
+    ) {
+        if self.surfaces.is_empty() && self.vibrations.is_empty() {
+            return;
+        }
+        let drivers = self
+            .surfaces
+            .iter()
+            .map(|(h, _)| h)
+            .chain(self.vibrations.iter().map(|(h, _)| h));
+        crate::surface::wake_carried(drivers, narrow_phase, colliders, bodies);
     }
 
     /// Attaches a vibration source to a collider; its contacts feel it. A handle whose index no
@@ -507,8 +588,11 @@ impl<H> StickSlip<H> {
                 ),
             );
         }
+        // A skipped step (dt 0) leaves the step count, and `end_step` everything else, as is.
         self.clock.dt = if valid_dt(dt) { dt } else { 0.0 };
-        self.clock.step = self.clock.step.wrapping_add(1);
+        if valid_dt(dt) {
+            self.clock.step = self.clock.step.wrapping_add(1);
+        }
         self.clock.clustering = params.contact_clustering;
         *self.moving_surfaces.get_mut() = false;
         self.recycling.window = crate::rapier_compat::recycle_window(params);
@@ -530,6 +614,10 @@ impl<H> StickSlip<H> {
     ) {
         let dt = self.clock.dt;
         self.clock.open = false;
+        if !(dt > 0.0) {
+            // A skipped step (see `begin_step`): no state, total or report changes.
+            return;
+        }
         self.clock.time += dt;
         self.measure_patches(narrow_phase, dt);
         self.settle_after_step(narrow_phase, bodies, colliders);
@@ -638,6 +726,7 @@ impl<H> StickSlip<H> {
         if !valid_dt(world.integration_parameters.dt as f64) {
             return;
         }
+        self.wake_driven(&world.narrow_phase, &world.colliders, &mut world.bodies);
         self.begin_step(
             &world.integration_parameters,
             &world.bodies,

@@ -260,6 +260,7 @@ impl<H> StickSlip<H> {
             if !self.attached.contains(h)
                 || self.recycling.active.contains(h)
                 || self.vibrations.get(h).is_some()
+                || self.surfaces.get(h).is_some()
             {
                 continue;
             }

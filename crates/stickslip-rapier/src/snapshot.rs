@@ -626,6 +626,9 @@ pub struct StickSlipSnapshot {
     default_material: FrictionMaterial,
     materials: Vec<Entry<FrictionMaterial>>,
     vibrations: Vec<Entry<VibrationSnapshot>>,
+    /// Surface velocities (m/s, x y z; z = 0 in 2D).
+    #[serde(default)]
+    surfaces: Vec<Entry<[f32; 3]>>,
     /// Arena indices of the colliders whose hook flag the modifier turned on.
     flagged: Vec<u32>,
     /// Arena indices of the attached colliders.
@@ -764,6 +767,14 @@ impl<H> StickSlip<H> {
                     value: s.into(),
                 })
                 .collect(),
+            surfaces: self
+                .surfaces
+                .iter()
+                .map(|(h, v)| Entry {
+                    collider: h.into(),
+                    value: crate::tangent::world(*v),
+                })
+                .collect(),
             flagged: self.flagged.indices().collect(),
             attached: self.attached.indices().collect(),
             pair_materials: {
@@ -856,6 +867,13 @@ impl<H> StickSlip<H> {
                 source,
             })
         })?;
+        let surfaces = restore_map("surface velocities", &s.surfaces, colliders, |v| {
+            if v.iter().all(|x| x.is_finite()) {
+                Ok(crate::tangent::vector(*v))
+            } else {
+                Err(invalid("surface velocities", "a value is not finite"))
+            }
+        })?;
         let flagged = restore_bits("hook flags", &s.flagged, colliders)?;
         let attached = restore_bits("attached colliders", &s.attached, colliders)?;
         let store = s.contacts.to_store()?;
@@ -905,6 +923,7 @@ impl<H> StickSlip<H> {
         m.config = s.config;
         m.attached = attached;
         m.vibrations = vibrations;
+        m.surfaces = surfaces;
         m.flagged = flagged;
         m.store = store;
         m.clock = Clock {

@@ -162,6 +162,13 @@ fn slip_ahead(rec: &ContactState, slip: Vec2, dt: f64) -> Vec2 {
     vec2::scale(slip, dt * ahead)
 }
 
+/// The fastest slip one step of the limit's impulse brakes (with a margin for the bodies'
+/// rotation): a slip the solver is braking, not one the law must take.
+fn one_step_slip(rec: &ContactState, input: &ContactInput) -> f64 {
+    let f_n = input.normal_force.min(rec.mean_normal_force as f64);
+    GIVE_MARGIN * rec.limit as f64 * f_n * input.dt * input.inv_mass
+}
+
 /// Whether a contact gives at its capacity this step instead of yielding: its solve
 /// saturated under a load that jumped, and the slip is the solver braking its own lag.
 ///
@@ -180,12 +187,8 @@ fn slip_ahead(rec: &ContactState, slip: Vec2, dt: f64) -> Vec2 {
 ///   elastic range took at first, or a give going on).
 fn gives(rec: &ContactState, input: &ContactInput, saturated: bool, speed: f64) -> bool {
     let limit = rec.limit as f64;
-    let (f_n, dt) = (input.normal_force, input.dt);
-    if !(saturated
-        && speed > 0.0
-        && speed
-            <= GIVE_MARGIN * limit * f_n.min(rec.mean_normal_force as f64) * dt * input.inv_mass)
-    {
+    let f_n = input.normal_force;
+    if !(saturated && speed > 0.0 && speed <= one_step_slip(rec, input)) {
         return false;
     }
     let shrinking = speed < rec.slip_speed as f64;
@@ -299,13 +302,15 @@ pub fn step_contact(rec: &mut ContactState, input: &ContactInput) -> ContactOutp
             && rec.forming == 1
             && reached
             && speed > 0.0
+            && speed <= one_step_slip(rec, input)
             && can_stick
             && source.is_none()
         {
             // The last forming step still brakes, at the limit, the slip the cold solve let
             // through (a load close to the capacity brakes it slowly: a box put down on a
             // slope at 0.95 of break-away takes three steps): the contact gives on while
-            // that slip shrinks (see `gives`).
+            // that slip shrinks (see `gives`). A faster slip (put down on a moving belt) is
+            // the law's.
             GIVING
         } else if giving_before {
             0
@@ -592,7 +597,8 @@ mod tests {
         // A box put down on a slope at 0.95 of break-away (μ_k 0.4 < μ_s 0.5): the cold solve
         // lets a slip through that the solver brakes at the limit over three steps, as the
         // load leaves little margin. The contact holds at its capacity while that slip
-        // shrinks; a slip that keeps growing after forming is the law's (it slides).
+        // shrinks; a slip that keeps growing after forming, or one too fast for a step of the
+        // limit to brake, is the law's (it slides).
         let b = basis();
         let law = Law::elasto_plastic(1e4, 0.5, 0.55, Curve::constant(0.4).unwrap()).unwrap();
         let step = |rec: &mut ContactState, mu: f64, v: f64| {
@@ -604,6 +610,8 @@ mod tests {
         for (slips, holds) in [
             ([0.0108, 0.0071, 0.0034, 0.0], true),
             ([0.0108, 0.0120, 0.0140, 0.0160], false),
+            // Put down on a belt: a slip one step of the limit cannot brake is the law's.
+            ([0.34, 0.30, 0.26, 0.22], false),
         ] {
             let mut rec = ContactState::default();
             let mut first = input(&law, &b, [0.0; 2], [0.0; 2]);

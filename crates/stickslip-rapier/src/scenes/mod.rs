@@ -98,8 +98,10 @@ impl BoxScene {
     }
 }
 
-/// A conveyor: the `belt` collider's surface moves at `velocity` (world), through rapier's
-/// per-contact target tangent velocity. Flag the belt collider with
+/// A conveyor written as a user's own hook (the tests of wrapped hooks; stickslip's own is
+/// [`crate::StickSlip::set_surface_velocity`]): the `belt` collider's surface moves at
+/// `velocity` (world), through rapier's per-contact target tangent velocity. Flag the belt
+/// collider with
 /// `ActiveHooks::MODIFY_SOLVER_CONTACTS` (as without stickslip), wrap the conveyor with
 /// [`crate::StickSlip::with_hooks`], and the friction law works relative to the moving
 /// surface.

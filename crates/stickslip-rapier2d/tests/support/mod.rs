@@ -27,8 +27,10 @@ pub struct BoxOnIncline {
 
 impl BoxOnIncline {
     pub fn new(theta: f64, friction: f32) -> Self {
-        let mut world = PhysicsWorld::default();
-        world.gravity = Vector::new((G * theta.sin()) as f32, -(G * theta.cos()) as f32);
+        let mut world = PhysicsWorld {
+            gravity: Vector::new((G * theta.sin()) as f32, -(G * theta.cos()) as f32),
+            ..PhysicsWorld::default()
+        };
         let ground =
             world.insert_collider(ColliderBuilder::cuboid(50.0, 0.1).friction(friction), None);
         let (body, cube) = world.insert(
@@ -98,20 +100,32 @@ pub struct Sled {
 
 impl Sled {
     pub fn new(half: f32, mass: f32, dt: f64, friction: f32) -> Self {
-        let mut world = PhysicsWorld::default();
-        world.gravity = Vector::ZERO;
+        Sled::with_order(half, mass, dt, friction, false)
+    }
+
+    /// [`Sled::new`], the sled inserted before the plate when `sled_first` (rapier2d then
+    /// lists the sled as the pair's collider 1: the contact normal points down).
+    pub fn with_order(half: f32, mass: f32, dt: f64, friction: f32, sled_first: bool) -> Self {
+        let mut world = PhysicsWorld {
+            gravity: Vector::ZERO,
+            ..PhysicsWorld::default()
+        };
         world.integration_parameters.dt = dt as f32;
-        let plate =
-            world.insert_collider(ColliderBuilder::cuboid(500.0, 0.1).friction(friction), None);
-        let (body, sled) = world.insert(
-            RigidBodyBuilder::dynamic()
-                .translation(Vector::new(0.0, 0.1 + half))
-                .lock_rotations()
-                .can_sleep(false),
-            ColliderBuilder::cuboid(half, half)
-                .density(mass / (4.0 * half * half))
-                .friction(friction),
-        );
+        let plate_builder = ColliderBuilder::cuboid(500.0, 0.1).friction(friction);
+        let body_builder = RigidBodyBuilder::dynamic()
+            .translation(Vector::new(0.0, 0.1 + half))
+            .lock_rotations()
+            .can_sleep(false);
+        let sled_builder = ColliderBuilder::cuboid(half, half)
+            .density(mass / (4.0 * half * half))
+            .friction(friction);
+        let (plate, (body, sled)) = if sled_first {
+            let bs = world.insert(body_builder, sled_builder);
+            (world.insert_collider(plate_builder, None), bs)
+        } else {
+            let p = world.insert_collider(plate_builder, None);
+            (p, world.insert(body_builder, sled_builder))
+        };
         Sled {
             world,
             body,
