@@ -74,14 +74,10 @@ impl StickSlipContacts {
     /// The most slippery regime among the contacts of the collider `entity` (sliding over
     /// stick-slip over sticking), or `None` without contacts: e.g. to colour a part.
     pub fn regime_of(&self, entity: Entity) -> Option<Regime> {
-        let rank = |r: Regime| match r {
-            Regime::Sticking => 0,
-            Regime::StickSlip => 1,
-            Regime::Sliding => 2,
-        };
+        // The codes rank the regimes: sticking 0, stick-slip 1, sliding 2.
         self.of(entity)
             .map(|c| c.report.regime)
-            .max_by_key(|r| rank(*r))
+            .max_by_key(|r| r.code())
     }
 }
 

@@ -59,8 +59,8 @@ mod rapier_compat;
 mod read_back;
 mod recycle;
 mod report;
-/// Reference scenes of the workspace's tests, figures, examples and benchmarks: fixtures
-/// behind the `scenes` feature, not part of the API.
+// Reference scenes of the workspace's tests, figures, examples and benchmarks: fixtures
+// behind the `scenes` feature, not part of the API.
 #[cfg(all(feature = "scenes", not(dim2)))]
 #[doc(hidden)]
 pub mod scenes;

@@ -238,13 +238,9 @@ pub const STICK_SLIP_COLOR: [u8; 3] = [255, 127, 14];
 /// Color of sliding contacts (red).
 pub const SLIDING_COLOR: [u8; 3] = [214, 39, 40];
 
-/// Class id of a regime in the `world/contacts` annotation context.
+/// Class id of a regime in the `world/contacts` annotation context: its code.
 pub fn regime_class(r: Regime) -> u16 {
-    match r {
-        Regime::Sticking => 0,
-        Regime::StickSlip => 1,
-        Regime::Sliding => 2,
-    }
+    r.code() as u16
 }
 
 fn regime_color(r: Regime) -> Color {
