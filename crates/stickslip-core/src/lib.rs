@@ -12,22 +12,24 @@
 //!   coefficients) plus a time-stepped reference simulator of his spring model.
 //! - [`feeder`]: a rigid-body reference for vibratory feeders (point mass, exact ballistic
 //!   flight, plastic landing with Coulomb impact friction).
-//! - [`block`]: the seed's Example 1, a block under a time-dependent force, integrated with
-//!   adaptive explicit and implicit ODE methods from `differential-equations`.
+//! - [`block`]: the seed's Example 1, a block under a time-dependent force: its force profile,
+//!   and (feature `reference`) its simulation with adaptive explicit and implicit ODE methods
+//!   from `differential-equations`, which builds without the feature do not carry.
 #![warn(missing_docs)]
 // `!(x > 0.0)` is deliberate throughout: it rejects NaN along with non-positive values.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod block;
 /// The seed's many-contact reference (a chain of blocks), used by the benchmarks only: behind
-/// the `reference-chain` feature, outside the default public surface.
-#[cfg(feature = "reference-chain")]
+/// the `reference` feature, outside the default public surface.
+#[cfg(feature = "reference")]
 #[doc(hidden)]
 pub mod chain;
 mod combine_rule;
 pub mod contact;
 pub mod error;
 pub mod feeder;
+#[cfg(feature = "reference")]
 mod integrate;
 pub mod law;
 pub mod material;

@@ -1,22 +1,26 @@
 //! The seed's Example 1: a block of mass m on a plane under a time-dependent tangential force
 //! F(t), integrated with adaptive ODE methods from `differential-equations`, for every law.
+//! The simulators need the `reference` feature (they bring the ODE crate); the force profile
+//! and the block do not.
 //!
 //! - [`ForceProfile`]: a validated piecewise-linear F(t); [`ForceProfile::example1`] gives the
 //!   three phases of the seed (sticking just below break-away, stick-slip then sliding,
 //!   slip-stick back to rest).
-//! - [`simulate`]: EP (state [x, v, μ, σ], arcs between the law's reset events) and Regul as
+//! - `simulate`: EP (state [x, v, μ, σ], arcs between the law's reset events) and Regul as
 //!   smooth ODEs; Phys and Coulomb as the exact
 //!   switched system: sliding arcs integrated up to the event v = 0, sticking arcs resolved
 //!   from the profile in closed form.
-//! - [`BeltSpring`]: the mass–spring on a moving belt with EP (the stick-slip oscillator), and
+//! - `BeltSpring`: the mass–spring on a moving belt with EP (the stick-slip oscillator), and
 //!   its analytic period for static/kinetic Coulomb friction.
-//! - [`Integrator`]: explicit Runge–Kutta–Fehlberg 4(5) or Dormand–Prince 5(4) (the ode45
+//! - `Integrator`: explicit Runge–Kutta–Fehlberg 4(5) or Dormand–Prince 5(4) (the ode45
 //!   analogue), or the L-stable ESDIRK 3(2) (an implicit stiff method in the spirit of ode23s).
 
 mod profile;
+#[cfg(feature = "reference")]
 mod simulate;
 
 pub use profile::ForceProfile;
+#[cfg(feature = "reference")]
 pub use simulate::{
     BeltSpring, BlockRun, Integrator, MAX_DURATION, PhaseSummary, RunStats, STICK_SPEED, SimError,
     Tolerances, simulate,

@@ -24,6 +24,7 @@ pub(crate) mod numeric;
 pub mod oscillation;
 pub(crate) mod periodic_orbit;
 pub mod psi;
+mod slip_arc;
 pub mod spring_model;
 pub mod static_friction;
 

@@ -15,7 +15,7 @@
 //!
 //! Stick ends at the first root of R − |F| (found on a scan grid, with a look at every local
 //! minimum in between), slip at the first root of λ (one axis: scan and root; in the plane: the
-//! event of an adaptive Dormand–Prince integration of θ). A jump of any waveform moves F by the
+//! event of an adaptive Dormand–Prince integration of θ, [`super::slip_arc`]). A jump of any waveform moves F by the
 //! base's jump and projects it onto the new disc, as the time-stepper does. The period map is
 //! iterated to its fixed point; periods of pure stick are skipped in one go (they only shift F
 //! by d). Averages are Gauss–Legendre quadratures of the closed forms, or integrated along
@@ -24,10 +24,9 @@
 //! At zero drag speed a contact that sticks throughout has no unique steady state; the one
 //! returned is the limit v0 → 0± (the side is given): F is shifted until it touches the disc.
 
-use differential_equations::prelude::*;
-
 use super::numeric::{bracketed_root, golden_min};
 use super::oscillation::{Excitation, Oscillation};
+use super::slip_arc::{ArcEnd, ArcTolerances, integrate_arc};
 use crate::error::ParamError;
 
 /// Scan points per period for the events of stick and one-axis slip.
@@ -59,10 +58,12 @@ const PERIODIC_TOL: f64 = 1e-11;
 /// Periods the fixed-point iteration may run.
 pub(crate) const MAX_PERIODS: usize = 4_000;
 /// Tolerances and budget of the in-plane slip integration.
-const ODE_RTOL: f64 = 1e-10;
-const ODE_ATOL: f64 = 1e-12;
-const ODE_MAX_STEP: f64 = 1.0 / 512.0;
-const ODE_MAX_STEPS: usize = 200_000;
+const ARC_TOLERANCES: ArcTolerances = ArcTolerances {
+    rtol: 1e-10,
+    atol: 1e-12,
+    h_max: 1.0 / 512.0,
+    max_steps: 200_000,
+};
 
 /// Averages over one period of the steady state, scaled (forces over μ0 k_z ū_z).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -577,23 +578,17 @@ impl<'a> Orbit<'a> {
         if arc.push(x0, theta0) < 0.0 {
             return Ok((x0, f0, Mode::Stick));
         }
-        let span = p.b - x0;
-        let sol = IVP::ode(&arc, x0, p.b, [theta0, 0.0, 0.0])
-            .event(&arc)
-            .method(
-                ExplicitRungeKutta::dopri5()
-                    .rtol(ODE_RTOL)
-                    .atol(ODE_ATOL)
-                    .h0((span * 1e-3).min(ODE_MAX_STEP))
-                    .h_max(ODE_MAX_STEP)
-                    .max_steps(ODE_MAX_STEPS),
-            )
-            .solve()
-            .map_err(|_| no_convergence("in-plane slip integration steps", ODE_MAX_STEPS))?;
-        let (Some(&end), Some(y)) = (sol.t.last(), sol.y.last()) else {
+        let Some(ArcEnd { x: end, y }) = integrate_arc(
+            |x, y| arc.rate(x, y),
+            |x, y| arc.event(x, y),
+            x0,
+            p.b,
+            [theta0, 0.0, 0.0],
+            &ARC_TOLERANCES,
+        ) else {
             return Err(no_convergence(
                 "in-plane slip integration steps",
-                ODE_MAX_STEPS,
+                ARC_TOLERANCES.max_steps,
             ));
         };
         let end = end.clamp(x0, p.b);
@@ -633,7 +628,7 @@ impl<'a> Orbit<'a> {
     }
 }
 
-/// The in-plane slip ODE for y = [θ, ∫F_x, ∫F_y] and its end event.
+/// The in-plane slip arc of one piece.
 struct PlanarSlip<'a, 'b> {
     orbit: &'b Orbit<'a>,
     piece: &'b Piece,
@@ -648,27 +643,23 @@ impl PlanarSlip<'_, '_> {
     }
 }
 
-impl ODE<f64, [f64; 3]> for PlanarSlip<'_, '_> {
-    fn diff(&self, x: f64, y: &[f64; 3], dydx: &mut [f64; 3]) {
+impl PlanarSlip<'_, '_> {
+    /// The slip ODE for y = [θ, ∫F_x, ∫F_y].
+    fn rate(&self, x: f64, y: &[f64; 3]) -> [f64; 3] {
         let r = self.orbit.radius(self.piece, x);
         let (s, c) = y[0].sin_cos();
         let w = self.orbit.rate(self.piece, x);
         // The rim force turns towards the base's motion; at a vanishing disc it already
         // points along it (and the contact is about to be lost), so hold θ there.
-        dydx[0] = if r > R_LOST {
+        let turn = if r > R_LOST {
             (w[1] * c - w[0] * s) / r
         } else {
             0.0
         };
-        dydx[1] = r * c;
-        dydx[2] = r * s;
+        [turn, r * c, r * s]
     }
-}
 
-impl Event<f64, [f64; 3]> for PlanarSlip<'_, '_> {
-    fn config(&self) -> EventConfig {
-        EventConfig::new(CrossingDirection::Negative, Some(1))
-    }
+    /// The arc's end: the push falls below zero or the disc all but closes.
     fn event(&self, x: f64, y: &[f64; 3]) -> f64 {
         let r = self.orbit.radius(self.piece, x);
         self.push(x, y[0]).min(r - 2.0 * R_LOST)
