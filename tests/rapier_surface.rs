@@ -4,7 +4,8 @@
 //! 0.5 %) — under stickslip's elasto-plastic law on an attached belt, and under rapier's own
 //! Coulomb friction when nothing is attached (the surface applies on every pair); a box asleep
 //! on the belt is woken when it starts; stopping the belt hands an unattached belt's hook
-//! flag back and the box comes to rest; a snapshot keeps the surface.
+//! flag back and the box comes to rest, and keeps a flag said to be the user's; a snapshot
+//! keeps the surface.
 
 use rapier3d::prelude::*;
 use stickslip::core::law::Law;
@@ -131,4 +132,29 @@ fn a_belt_wakes_what_sleeps_on_it_and_stopping_it_hands_the_flag_back() {
     assert!(!hooked(&s));
     let v = run(&mut s, &mut m, 60);
     assert!(v[59].abs() < 1e-3, "still moving at {}", v[59]);
+}
+
+#[test]
+fn whose_belt_flag_it_is_is_the_modifiers_to_keep() {
+    // An integration that learns only later that the user's hooks need a belt's flag (bevy's
+    // `ActiveHooks` component) says so with `set_user_hook_flag`: the flag then stays when
+    // the belt stops; said the other way, stopping the belt hands it back.
+    let hooked = |s: &BoxScene| {
+        s.world.colliders[s.ground]
+            .active_hooks()
+            .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
+    };
+    let belt = Vector::new(BELT, 0.0, 0.0);
+    for users in [true, false] {
+        let mut s = scene();
+        let mut m = StickSlip::new(FrictionMaterial::new(ep()));
+        m.set_surface_velocity(&mut s.world.colliders, s.ground, belt);
+        m.set_user_hook_flag(&mut s.world.colliders, s.ground, users);
+        assert!(hooked(&s));
+        m.remove_surface_velocity(&mut s.world.colliders, s.ground);
+        assert_eq!(hooked(&s), users, "the user's flag: {users}");
+        // Neither attached nor a surface any more: the modifier leaves the collider alone.
+        m.set_user_hook_flag(&mut s.world.colliders, s.ground, !users);
+        assert_eq!(hooked(&s), users);
+    }
 }

@@ -3,32 +3,17 @@
 
 use bevy_rapier3d::pipeline::{ContactModificationContextView, PairFilterContextView};
 use bevy_rapier3d::prelude::BevyPhysicsHooks;
-use bevy_rapier3d::rapier::geometry::{ColliderHandle, SolverFlags};
-use bevy_rapier3d::rapier::pipeline::ActiveHooks;
+use bevy_rapier3d::rapier::geometry::SolverFlags;
 use bevy_rapier3d::rapier::pipeline::{
     ContactModificationContext, PairFilterContext, PhysicsHooks,
 };
-use std::collections::HashSet;
 use stickslip_rapier_035::StickSlip;
 
-/// The app's hooks as rapier hooks.
+/// The app's hooks as rapier hooks. Which pairs they see is stickslip's to decide (the
+/// modifier owns whose hook flag is whose, see `StickSlip::modify_solver_contacts_with`);
+/// in a context stickslip does not bracket it has no flags and they see every pair.
 pub(crate) struct UserHooks<'a, T> {
     pub(crate) user: &'a T,
-    /// The colliders whose hook flag is stickslip's, not the app's.
-    pub(crate) hook_flags: &'a HashSet<ColliderHandle>,
-}
-
-impl<T> UserHooks<'_, T> {
-    /// Whether bevy_rapier would call the app's hook on this pair without stickslip.
-    fn apps_pair(&self, context: &ContactModificationContext) -> bool {
-        [context.collider1, context.collider2].into_iter().any(|h| {
-            !self.hook_flags.contains(&h)
-                && context.colliders.get(h).is_some_and(|c| {
-                    c.active_hooks()
-                        .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
-                })
-        })
-    }
 }
 
 impl<T: BevyPhysicsHooks> PhysicsHooks for UserHooks<'_, T> {
@@ -43,10 +28,8 @@ impl<T: BevyPhysicsHooks> PhysicsHooks for UserHooks<'_, T> {
     }
 
     fn modify_solver_contacts(&self, context: &mut ContactModificationContext) {
-        if self.apps_pair(context) {
-            self.user
-                .modify_solver_contacts(ContactModificationContextView { raw: &mut *context });
-        }
+        self.user
+            .modify_solver_contacts(ContactModificationContextView { raw: &mut *context });
     }
 }
 

@@ -3,7 +3,7 @@
 
 use bevy::prelude::*;
 use bevy_rapier3d::rapier::geometry::{ColliderHandle, ColliderSet};
-use std::collections::{HashMap, HashSet};
+use std::collections::HashMap;
 use stickslip_core::law::Regime;
 use stickslip_rapier_035::{ContactReport, StickSlip};
 
@@ -18,9 +18,6 @@ pub struct StickSlipRapier {
     pub(crate) attached: HashMap<Entity, ColliderHandle>,
     pub(crate) vibrating: HashMap<Entity, ColliderHandle>,
     pub(crate) surface_entities: HashMap<Entity, ColliderHandle>,
-    /// The colliders whose `MODIFY_SOLVER_CONTACTS` flag is stickslip's, not the app's (the
-    /// app's hooks do not see their pairs unless the other collider is the app's).
-    pub(crate) hook_flags: HashSet<ColliderHandle>,
 }
 
 impl StickSlipRapier {
@@ -31,7 +28,6 @@ impl StickSlipRapier {
             attached: HashMap::new(),
             vibrating: HashMap::new(),
             surface_entities: HashMap::new(),
-            hook_flags: HashSet::new(),
         }
     }
 

@@ -14,7 +14,6 @@ use bevy_rapier3d::plugin::context::{
     RapierRigidBodySet, SimulationToRenderTime,
 };
 use bevy_rapier3d::prelude::*;
-use std::collections::HashSet;
 
 /// The rapier steps of one frame, exactly as bevy_rapier 0.36's `step_simulation` runs them.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -134,7 +133,6 @@ pub(crate) fn step_simulation_bracketed<H>(
     let user = &*user;
     let state = &mut *state;
     let out = &mut out;
-    let no_flags = HashSet::new();
     for (mut sim, mut colliders, mut joints, mut bodies, config, mut to_render, is_default) in
         &mut contexts
     {
@@ -170,15 +168,9 @@ pub(crate) fn step_simulation_bracketed<H>(
                         .modifier
                         .begin_step(&params, &bodies.bodies, &mut colliders.colliders);
                 }
-                // stickslip's hook flags are the default context's handles.
-                let hook_flags = if is_default {
-                    &state.hook_flags
-                } else {
-                    &no_flags
-                };
                 let hooks = StepHooks {
                     stickslip: bracket.then_some(&state.modifier),
-                    user: UserHooks { user, hook_flags },
+                    user: UserHooks { user },
                 };
                 // One rapier step: bevy_rapier's Fixed mode with one substep of this dt.
                 sim.step_simulation(

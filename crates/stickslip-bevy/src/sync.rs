@@ -4,13 +4,14 @@
 //! physics runs in.
 //!
 //! The rapier hook flag `MODIFY_SOLVER_CONTACTS` on a stickslip collider is stickslip's unless
-//! the app's own `ActiveHooks` component carries it: the component stays the app's (stickslip
-//! never writes it), stickslip turns the flag on in rapier's collider, and again after
-//! bevy_rapier rewrote the flags from a changed component. The app's hooks run only on pairs
-//! with a collider whose flag is the app's ([`crate::hooks::UserHooks`]). On an attached
-//! collider whose flag is stickslip's alone (no app flag, no `SurfaceVelocity`) the modifier
-//! owns it and turns it off while the collider's contacts are quiet, so that rapier recycles
-//! them as it does without stickslip (`StickSlip::set_user_hook_flag`).
+//! the app's own `ActiveHooks` component carries it. The component stays the app's (stickslip
+//! never writes it); the modifier is the one owner of whose flag it is: this add-on tells it
+//! what the component says after attaching, after setting a surface velocity and after
+//! bevy_rapier rewrote the flags from a changed component (`StickSlip::set_user_hook_flag`).
+//! The modifier turns the flag on, runs the app's hooks only on pairs with a collider whose
+//! flag is the app's, turns its own flag off while the collider's contacts are quiet (so that
+//! rapier recycles them as it does without stickslip) and off again on detach or surface
+//! removal.
 
 use crate::components::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
 use crate::state::StickSlipRapier;
@@ -18,29 +19,22 @@ use bevy::prelude::*;
 use bevy_rapier3d::plugin::context::{DefaultRapierContext, RapierContextColliders};
 use bevy_rapier3d::prelude::*;
 use bevy_rapier3d::rapier::geometry::{ColliderHandle, ColliderSet};
-use bevy_rapier3d::rapier::pipeline::ActiveHooks as RapierHooks;
 
 /// Whether a collider lives in the default context (the one stickslip brackets).
 fn in_default(link: Option<&RapierContextEntityLink>, default: Entity) -> bool {
     link.is_none_or(|l| l.0 == default)
 }
 
-/// Turns the hook flag on in rapier's collider; it is stickslip's unless the app's component
-/// has it.
-fn claim_hook_flag(
+/// Tells the modifier whether the app's `ActiveHooks` component has the hook flag of `h` (an
+/// attached collider or a moving surface): the modifier owns the answer.
+fn declare_app_flag(
     state: &mut StickSlipRapier,
     colliders: &mut ColliderSet,
-    handle: ColliderHandle,
+    h: ColliderHandle,
     app: Option<&ActiveHooks>,
 ) {
-    if let Some(c) = colliders.get_mut(handle) {
-        c.set_active_hooks(c.active_hooks() | RapierHooks::MODIFY_SOLVER_CONTACTS);
-    }
-    if app.is_some_and(|f| f.contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)) {
-        state.hook_flags.remove(&handle);
-    } else {
-        state.hook_flags.insert(handle);
-    }
+    let apps = app.is_some_and(|f| f.contains(ActiveHooks::MODIFY_SOLVER_CONTACTS));
+    state.modifier.set_user_hook_flag(colliders, h, apps);
 }
 
 /// Attaches marked colliders once bevy_rapier made them (and again with a changed material).
@@ -77,31 +71,13 @@ pub(crate) fn attach(
         {
             state.attached.remove(&entity);
             state.modifier.detach(colliders, old);
-            release(state, colliders, entity, old);
         }
-        claim_hook_flag(state, colliders, handle.0, hooks);
         state
             .modifier
             .attach(colliders, handle.0, friction.0.clone());
         state.attached.insert(entity, handle.0);
-        hand_flag_to_modifier(state, colliders, handle.0);
+        declare_app_flag(state, colliders, handle.0, hooks);
     }
-}
-
-/// Tells the modifier whose the flag of an attached collider is: stickslip's own (it then
-/// turns it off while the collider's contacts are quiet, so that rapier recycles them as it
-/// would without stickslip), or the app's (its `ActiveHooks` has the flag: the app's hooks
-/// need it on every step) or a `SurfaceVelocity`'s (kept on by this add-on).
-fn hand_flag_to_modifier(
-    state: &mut StickSlipRapier,
-    colliders: &mut ColliderSet,
-    h: ColliderHandle,
-) {
-    let app_or_surface =
-        !state.hook_flags.contains(&h) || state.modifier.surface_velocity(h).is_some();
-    state
-        .modifier
-        .set_user_hook_flag(colliders, h, app_or_surface);
 }
 
 /// Vibration sources onto the colliders' contacts.
@@ -159,10 +135,9 @@ pub(crate) fn sync_surfaces(
     let colliders = &mut colliders.bypass_change_detection().colliders;
     for (entity, v, h, hooks, link) in &changed {
         if in_default(link, default) {
-            claim_hook_flag(state, colliders, h.0, hooks);
             state.modifier.set_surface_velocity(colliders, h.0, v.0);
             state.surface_entities.insert(entity, h.0);
-            hand_flag_to_modifier(state, colliders, h.0);
+            declare_app_flag(state, colliders, h.0, hooks);
         }
     }
 }
@@ -184,8 +159,7 @@ pub(crate) fn follow_app_hooks(
         if state.attached.get(&entity) == Some(&h.0)
             || state.surface_entities.get(&entity) == Some(&h.0)
         {
-            claim_hook_flag(state, colliders, h.0, Some(hooks));
-            hand_flag_to_modifier(state, colliders, h.0);
+            declare_app_flag(state, colliders, h.0, Some(hooks));
         }
     }
 }
@@ -233,7 +207,6 @@ pub(crate) fn removals(
         {
             state.attached.remove(&entity);
             state.modifier.detach(colliders, h);
-            release(state, colliders, entity, h);
         }
     }
     let removed: Vec<Entity> = vibration.read().chain(collider.iter().copied()).collect();
@@ -252,24 +225,6 @@ pub(crate) fn removals(
         {
             state.surface_entities.remove(&entity);
             state.modifier.remove_surface_velocity(colliders, h);
-            release(state, colliders, entity, h);
         }
-    }
-}
-
-/// Turns stickslip's hook flag off once `entity` (collider `h`) needs it no more.
-fn release(
-    state: &mut StickSlipRapier,
-    colliders: &mut ColliderSet,
-    entity: Entity,
-    h: ColliderHandle,
-) {
-    if state.attached.contains_key(&entity) || state.surface_entities.contains_key(&entity) {
-        return;
-    }
-    if state.hook_flags.remove(&h)
-        && let Some(c) = colliders.get_mut(h)
-    {
-        c.set_active_hooks(c.active_hooks() - RapierHooks::MODIFY_SOLVER_CONTACTS);
     }
 }

@@ -388,21 +388,24 @@ impl<H> StickSlip<H> {
         }
     }
 
-    /// Says whether the `MODIFY_SOLVER_CONTACTS` flag of an attached collider is also the
-    /// user's — their own hooks need it on every step — for integrations that learn it only
-    /// after [`Self::attach`] (bevy's `ActiveHooks` component, which bevy_rapier writes into
-    /// rapier's collider whenever it changes). When it is, stickslip keeps the flag on and the
-    /// collider's pairs are never recycled; when it is not, the flag is stickslip's, which
-    /// turns it off while the collider's contacts are quiet (see the `recycle` module) and off
-    /// in [`Self::detach`]. Either way the flag is on now and the collider's pairs are hooked
-    /// in the next step. A collider that is not attached is left alone.
+    /// Says whether the `MODIFY_SOLVER_CONTACTS` flag of an attached collider or a moving
+    /// surface is also the user's — their own hooks need it on every step — for integrations
+    /// that learn it only after [`Self::attach`] or [`Self::set_surface_velocity`] (bevy's
+    /// `ActiveHooks` component, which bevy_rapier writes into rapier's collider whenever it
+    /// changes). stickslip is the one owner of that answer: the user's hooks run on the pairs
+    /// of colliders whose flag is the user's, and only there. When it is the user's, stickslip
+    /// keeps the flag on and the collider's pairs are never recycled; when it is not, the flag
+    /// is stickslip's, which turns it off while the collider's contacts are quiet (see the
+    /// `recycle` module) and off in [`Self::detach`] or [`Self::remove_surface_velocity`] once
+    /// nothing of stickslip's needs it. Either way the flag is on now and the collider's pairs
+    /// are hooked in the next step. Any other collider is left alone.
     pub fn set_user_hook_flag(
         &mut self,
         colliders: &mut ColliderSet,
         collider: ColliderHandle,
         users: bool,
     ) {
-        if !self.attached.contains(collider) {
+        if !self.attached.contains(collider) && self.surfaces.get(collider).is_none() {
             return;
         }
         let Some(c) = colliders.get_mut(collider) else {
