@@ -1,0 +1,228 @@
+//! One step of the friction law per contact manifold, at the end of avian's narrow phase: the
+//! manifold's slip and the last solve's measurement in, its `friction` (the law's limit) and
+//! `tangent_velocity` (the law's target, moving surfaces) out.
+//!
+//! avian's solver drives (v₂ − v₁) + `tangent_velocity` to zero at each point, so a surface
+//! target t for v₂ − v₁ (the kernel's and rapier's convention) is written as −t. The slip the
+//! law sees is the relative velocity of the touching material points, ġ = v₂ − v₁ + the
+//! manifold's tangent velocity (what the app's hooks set, plus the `SurfaceVelocity`s).
+
+use crate::components::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
+use crate::key::{ContactKey, Part};
+use crate::pair_law::{PairLaws, side};
+use crate::plugin::StickSlipAvianConfig;
+use crate::store::ContactStore;
+use avian3d::collision::narrow_phase::NarrowPhaseConfig;
+use avian3d::dynamics::rigid_body::sleeping::SleepTimer;
+use avian3d::prelude::*;
+use bevy::ecs::system::SystemParam;
+use bevy::prelude::*;
+use stickslip_core::contact::{ContactInput, TangentBasis, step_contact};
+use stickslip_core::law::{Coulomb, Law};
+
+/// The components of a collider stickslip reads.
+type ColliderItem = (
+    Option<&'static StickSlipFriction>,
+    Option<&'static Friction>,
+    Option<&'static StickSlipVibration>,
+    Option<&'static SurfaceVelocity>,
+    Option<&'static ColliderOf>,
+    Option<&'static Rotation>,
+);
+
+/// The components of a body stickslip reads.
+type BodyItem = (
+    &'static RigidBody,
+    Option<&'static LinearVelocity>,
+    Option<&'static AngularVelocity>,
+    Option<&'static ComputedMass>,
+    Option<&'static Friction>,
+);
+
+/// What `apply` reads besides the contact graph.
+#[derive(SystemParam)]
+pub(crate) struct World<'w, 's> {
+    colliders: Query<'w, 's, ColliderItem>,
+    bodies: Query<'w, 's, BodyItem>,
+    default_friction: Res<'w, DefaultFriction>,
+    narrow_phase: Res<'w, NarrowPhaseConfig>,
+    config: Res<'w, StickSlipAvianConfig>,
+    time: Res<'w, Time>,
+}
+
+/// A body's motion at a contact.
+#[derive(Clone, Copy, Default)]
+struct Motion {
+    linear: Vec3,
+    angular: Vec3,
+    inv_mass: f32,
+}
+
+impl World<'_, '_> {
+    fn motion(&self, body: Option<Entity>) -> Motion {
+        let Some((rb, v, w, m, _)) = body.and_then(|b| self.bodies.get(b).ok()) else {
+            return Motion::default();
+        };
+        Motion {
+            linear: v.map_or(Vec3::ZERO, |v| v.0),
+            angular: w.map_or(Vec3::ZERO, |w| w.0),
+            inv_mass: if rb.is_dynamic() {
+                m.map_or(0.0, |m| m.inverse())
+            } else {
+                0.0
+            },
+        }
+    }
+
+    fn body_friction(&self, collider_of: Option<&ColliderOf>) -> Option<&Friction> {
+        collider_of
+            .and_then(|c| self.bodies.get(c.body).ok())
+            .and_then(|(.., f)| f)
+    }
+}
+
+/// Steps the law on every touching manifold of the pairs stickslip owns.
+pub(crate) fn apply(
+    mut graph: ResMut<ContactGraph>,
+    mut store: ResMut<ContactStore>,
+    mut laws: ResMut<PairLaws>,
+    mut timers: Query<&mut SleepTimer>,
+    world: World,
+) {
+    let store = &mut *store;
+    store.tick += 1;
+    store.stepped.clear();
+    let dt = world.time.delta_secs_f64();
+    // Also rejects NaN.
+    if dt.is_nan() || dt <= 0.0 {
+        return;
+    }
+    let time = world.time.elapsed_secs_f64() - dt;
+    let tick = store.tick;
+    let default_friction = world.default_friction.0;
+    for pair in graph.active_pairs_mut() {
+        if !pair.generates_constraints() || !pair.is_touching() || pair.manifolds.is_empty() {
+            continue;
+        }
+        let (Ok(c1), Ok(c2)) = (
+            world.colliders.get(pair.collider1),
+            world.colliders.get(pair.collider2),
+        ) else {
+            continue;
+        };
+        let (marked1, friction1, vib1, surface1, of1, rot1) = c1;
+        let (marked2, friction2, vib2, surface2, of2, _) = c2;
+        let surface = surface2.map_or(Vec3::ZERO, |s| s.0) - surface1.map_or(Vec3::ZERO, |s| s.0);
+        let source = vib1.or(vib2).map(|v| &v.0);
+        let sides = (
+            side(
+                pair.collider1,
+                marked1,
+                friction1,
+                world.body_friction(of1),
+                default_friction,
+                &world.config.default_material,
+            ),
+            side(
+                pair.collider2,
+                marked2,
+                friction2,
+                world.body_friction(of2),
+                default_friction,
+                &world.config.default_material,
+            ),
+        );
+        let law = laws.law(sides.0, sides.1);
+        let driven = surface != Vec3::ZERO || source.is_some();
+        if law.is_none() && !driven {
+            // avian's own Coulomb friction, untouched.
+            continue;
+        }
+        let (m1, m2) = (world.motion(pair.body1), world.motion(pair.body2));
+        if driven {
+            // A moving or vibrating surface is never at rest: what it touches stays awake.
+            for body in [pair.body1, pair.body2].into_iter().flatten() {
+                if let Ok(mut t) = timers.get_mut(body) {
+                    t.0 = 0.0;
+                }
+            }
+        }
+        // A surface or vibration on a pair of avian's own friction: Coulomb at its
+        // coefficient, so that the vibration acts on it too.
+        let coulomb;
+        let law = match law {
+            Some(l) => l,
+            None => {
+                coulomb = Law::Coulomb(Coulomb::clamped(pair.manifolds[0].friction as f64));
+                &coulomb
+            }
+        };
+        let manifolds = pair.manifolds.len();
+        let rotation1 = rot1.map_or(Quat::IDENTITY, |r| r.0);
+        let rel = if vib1.is_some() { -1.0 } else { 1.0 };
+        for (index, manifold) in pair.manifolds.iter_mut().enumerate() {
+            if manifold.points.is_empty() {
+                continue;
+            }
+            let n = manifold.normal;
+            let key = ContactKey {
+                collider1: pair.collider1,
+                collider2: pair.collider2,
+                part: Part::of(manifolds, n, rotation1),
+            };
+            let points = manifold.points.len() as f32;
+            let (r1, r2) = manifold
+                .points
+                .iter()
+                .fold((Vec3::ZERO, Vec3::ZERO), |(a, b), p| {
+                    (a + p.anchor1, b + p.anchor2)
+                });
+            let (r1, r2) = (r1 / points, r2 / points);
+            // avian's tangent velocity of the touching points: the app's hooks' and the
+            // surfaces' (−(v₂ − v₁) they ask for).
+            let drive = manifold.tangent_velocity + surface;
+            let drive = drive - n * n.dot(drive);
+            let v1 = m1.linear + m1.angular.cross(r1);
+            let v2 = m2.linear + m2.angular.cross(r2);
+            let basis = TangentBasis::plane(n.to_array(), n.any_orthonormal_vector().to_array());
+            let slip = basis.project((v2 - v1 + drive).to_array());
+            let record = store.records.entry(key).or_default();
+            let warm: f32 = manifold
+                .points
+                .iter()
+                .map(|p| p.warm_start_normal_impulse)
+                .sum();
+            let warm_start = if manifolds <= 4
+                && world.narrow_phase.match_contacts
+                && record.measured.normal_impulse > 0.0
+            {
+                (warm / record.measured.normal_impulse) as f64
+            } else {
+                1.0
+            };
+            let out = step_contact(
+                &mut record.state,
+                &ContactInput {
+                    law,
+                    source,
+                    rel,
+                    basis: &basis,
+                    normal_force: record.measured.normal_force,
+                    measured_mu: basis.project(record.measured.mu),
+                    slip,
+                    dt,
+                    time,
+                    inv_mass: (m1.inv_mass + m2.inv_mass) as f64,
+                    stiffness_time: world.config.stiffness_time,
+                    warm_start,
+                },
+            );
+            record.tick = tick;
+            record.slip_speed = (slip[0].hypot(slip[1])) as f32;
+            manifold.friction = record.state.limit;
+            // The law's target is one for v₂ − v₁: avian's sign is the other.
+            manifold.tangent_velocity = drive - Vec3::from_array(basis.lift(out.target));
+            store.stepped.insert((pair.contact_id.0, index), key);
+        }
+    }
+}

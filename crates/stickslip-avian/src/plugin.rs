@@ -1,0 +1,101 @@
+//! The plugin: its resources and where its systems run in avian's `PhysicsSchedule`.
+
+use crate::apply::apply;
+use crate::components::StickSlipFriction;
+use crate::measure::measure;
+use crate::pair_law::PairLaws;
+use crate::report::{RegimeChanged, StickSlipContacts};
+use crate::store::ContactStore;
+use avian3d::collision::narrow_phase::NarrowPhaseSystems;
+use avian3d::dynamics::solver::schedule::SolverSystems;
+use avian3d::prelude::*;
+use bevy::prelude::*;
+use stickslip_core::FrictionMaterial;
+use stickslip_core::law::{Coulomb, Law};
+use stickslip_core::sliding_curve::Curve;
+
+/// stickslip for an avian3d app: add it beside `PhysicsPlugins` (in any order; it needs
+/// avian's plugins to be there when the app runs).
+pub struct StickSlipAvianPlugin {
+    default_material: FrictionMaterial,
+}
+
+impl StickSlipAvianPlugin {
+    /// stickslip with this material for colliders marked `StickSlipFriction(None)`.
+    pub fn new(default_material: FrictionMaterial) -> Self {
+        StickSlipAvianPlugin { default_material }
+    }
+}
+
+impl Default for StickSlipAvianPlugin {
+    /// Elasto-plastic friction with avian's default coefficient 0.5 for break-away, static
+    /// and sliding friction, contact stiffness c = 1e5 1/m: sticking without creep.
+    fn default() -> Self {
+        let law = Curve::constant(0.5)
+            .and_then(|c| Law::elasto_plastic(1e5, 0.5, 0.5, c))
+            .unwrap_or_else(|_| Law::Coulomb(Coulomb::clamped(0.5)));
+        StickSlipAvianPlugin::new(FrictionMaterial::new(law))
+    }
+}
+
+/// The plugin's settings.
+#[derive(Resource, Debug, Clone)]
+pub(crate) struct StickSlipAvianConfig {
+    /// The material of `StickSlipFriction(None)`.
+    pub default_material: FrictionMaterial,
+    /// Averaging time of a contact's mean normal force (s), as rapier's adapter.
+    pub stiffness_time: f64,
+}
+
+/// stickslip's systems in avian's `PhysicsSchedule`, for apps that order their own around
+/// them.
+#[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum StickSlipAvianSystems {
+    /// The law's step on every contact, at the end of the narrow phase.
+    Apply,
+    /// The solve's measurement and the read-back, right after the solver stored its
+    /// impulses.
+    Measure,
+}
+
+impl Plugin for StickSlipAvianPlugin {
+    fn build(&self, app: &mut App) {
+        app.insert_resource(StickSlipAvianConfig {
+            default_material: self.default_material.clone(),
+            stiffness_time: 1.0,
+        })
+        .init_resource::<ContactStore>()
+        .init_resource::<PairLaws>()
+        .init_resource::<StickSlipContacts>()
+        .add_message::<RegimeChanged>()
+        .configure_sets(
+            PhysicsSchedule,
+            (
+                StickSlipAvianSystems::Apply.in_set(NarrowPhaseSystems::Last),
+                StickSlipAvianSystems::Measure
+                    .in_set(PhysicsStepSystems::Solver)
+                    .after(SolverSystems::StoreContactImpulses),
+            ),
+        )
+        .add_systems(
+            PhysicsSchedule,
+            (
+                (forget_changed_materials, apply)
+                    .chain()
+                    .in_set(StickSlipAvianSystems::Apply),
+                measure.in_set(StickSlipAvianSystems::Measure),
+            ),
+        );
+    }
+}
+
+/// A material that changed or went: the combined laws start over.
+fn forget_changed_materials(
+    changed: Query<(), Changed<StickSlipFriction>>,
+    mut removed: RemovedComponents<StickSlipFriction>,
+    mut laws: ResMut<PairLaws>,
+) {
+    if !changed.is_empty() || removed.read().next().is_some() {
+        laws.clear();
+    }
+}

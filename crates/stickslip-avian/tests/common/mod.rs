@@ -1,0 +1,85 @@
+//! Headless avian apps for the tests: `MinimalPlugins`, avian's `PhysicsPlugins` in its
+//! default schedule (`FixedPostUpdate`) at 60 Hz, one physics tick per `app.update()`.
+#![allow(dead_code)]
+
+use avian3d::prelude::*;
+use bevy::prelude::*;
+use bevy::time::TimeUpdateStrategy;
+use bevy::transform::TransformPlugin;
+use std::time::Duration;
+use stickslip_avian::StickSlipAvianPlugin;
+
+/// The physics rate (Hz).
+pub const HZ: f64 = 60.0;
+/// Gravity (m/s²).
+pub const G: f64 = 9.81;
+
+/// An app with avian (and stickslip unless `plain`), `substeps` solver substeps and gravity
+/// tilted by `theta` about z (the floor stays level: a slope of angle θ).
+pub fn app(stickslip: bool, substeps: u32, theta: f64) -> App {
+    let mut app = App::new();
+    app.add_plugins((MinimalPlugins, TransformPlugin, PhysicsPlugins::default()))
+        .insert_resource(Time::<Fixed>::from_hz(HZ))
+        .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f64(
+            1.0 / HZ,
+        )))
+        .insert_resource(SubstepCount(substeps))
+        .insert_resource(Gravity(Vec3::new(
+            (G * theta.sin()) as f32,
+            -(G * theta.cos()) as f32,
+            0.0,
+        )));
+    if stickslip {
+        app.add_plugins(StickSlipAvianPlugin::default());
+    }
+    app.finish();
+    app.cleanup();
+    // The first update only starts the clocks.
+    app.update();
+    app
+}
+
+/// A static floor, 400 m long (x) and 20 m wide, its top at y = 0.
+pub fn floor(app: &mut App, extra: impl Bundle) -> Entity {
+    app.world_mut()
+        .spawn((
+            RigidBody::Static,
+            Collider::cuboid(400.0, 0.2, 20.0),
+            Transform::from_xyz(0.0, -0.1, 0.0),
+            extra,
+        ))
+        .id()
+}
+
+/// A 1 kg box (0.5 m cube) resting on the floor at x.
+pub fn block(app: &mut App, x: f32, extra: impl Bundle) -> Entity {
+    app.world_mut()
+        .spawn((
+            RigidBody::Dynamic,
+            Collider::cuboid(0.5, 0.5, 0.5),
+            Mass(1.0),
+            Transform::from_xyz(x, 0.25, 0.0),
+            SleepingDisabled,
+            extra,
+        ))
+        .id()
+}
+
+/// Runs `n` physics ticks.
+pub fn run(app: &mut App, n: usize) {
+    for _ in 0..n {
+        app.update();
+    }
+}
+
+/// The body's position.
+pub fn position(app: &App, e: Entity) -> Vec3 {
+    app.world().get::<Position>(e).map_or(Vec3::NAN, |p| p.0)
+}
+
+/// The body's linear velocity.
+pub fn velocity(app: &App, e: Entity) -> Vec3 {
+    app.world()
+        .get::<LinearVelocity>(e)
+        .map_or(Vec3::NAN, |v| v.0)
+}
