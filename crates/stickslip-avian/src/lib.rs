@@ -76,3 +76,4 @@ pub use plugin::{StickSlipAvianPlugin, StickSlipAvianSystems};
 pub use report::{AvianContact, RegimeChanged, StickSlipContacts};
 pub use stickslip_core::FrictionMaterial;
 pub use stickslip_core::contact::VibrationSource;
+pub use store::ContactStore;

@@ -1,12 +1,13 @@
 //! The plugin: its resources and where its systems run in avian's `PhysicsSchedule`.
 
 use crate::apply::apply;
-use crate::components::StickSlipFriction;
+use crate::components::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
 use crate::measure::measure;
 use crate::pair_law::PairLaws;
 use crate::report::{RegimeChanged, StickSlipContacts};
 use crate::store::ContactStore;
 use avian3d::collision::narrow_phase::NarrowPhaseSystems;
+use avian3d::dynamics::solver::islands::WakeBody;
 use avian3d::dynamics::solver::schedule::SolverSystems;
 use avian3d::prelude::*;
 use bevy::prelude::*;
@@ -84,8 +85,29 @@ impl Plugin for StickSlipAvianPlugin {
                     .chain()
                     .in_set(StickSlipAvianSystems::Apply),
                 measure.in_set(StickSlipAvianSystems::Measure),
+                wake_driven.in_set(PhysicsStepSystems::First),
             ),
         );
+    }
+}
+
+/// A surface that starts moving or vibrating wakes what sleeps on it (while it moves, `apply`
+/// keeps what it touches awake).
+#[allow(clippy::type_complexity)]
+fn wake_driven(
+    driven: Query<Entity, Or<(Changed<SurfaceVelocity>, Changed<StickSlipVibration>)>>,
+    graph: Res<ContactGraph>,
+    sleeping: Query<(), With<Sleeping>>,
+    mut commands: Commands,
+) {
+    for e in &driven {
+        for pair in graph.contact_pairs_with(e) {
+            for body in [pair.body1, pair.body2].into_iter().flatten() {
+                if sleeping.contains(body) {
+                    commands.queue(WakeBody(body));
+                }
+            }
+        }
     }
 }
 

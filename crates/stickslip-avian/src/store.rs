@@ -41,11 +41,32 @@ impl Default for Record {
     }
 }
 
-/// Every contact's record, and this tick's manifolds (avian's contact id and manifold index)
-/// with the key they were stepped under.
+/// The friction state of every contact stickslip steps (a resource): one record per contact,
+/// kept while the contact lasts (or its pair sleeps) and dropped in the tick it is gone in.
 #[derive(Resource, Default)]
-pub(crate) struct ContactStore {
-    pub records: HashMap<ContactKey, Record>,
-    pub stepped: HashMap<(u32, usize), ContactKey>,
-    pub tick: u64,
+pub struct ContactStore {
+    pub(crate) records: HashMap<ContactKey, Record>,
+    /// This tick's manifolds (avian's contact id and manifold index) and their keys.
+    pub(crate) stepped: HashMap<(u32, usize), ContactKey>,
+    pub(crate) tick: u64,
+}
+
+impl ContactStore {
+    /// How many contacts have a friction state.
+    pub fn len(&self) -> usize {
+        self.records.len()
+    }
+
+    /// Whether no contact has a friction state.
+    pub fn is_empty(&self) -> bool {
+        self.records.is_empty()
+    }
+
+    /// How many contacts of the collider `entity` have a friction state.
+    pub fn count_of(&self, entity: Entity) -> usize {
+        self.records
+            .keys()
+            .filter(|k| k.collider1 == entity || k.collider2 == entity)
+            .count()
+    }
 }
