@@ -31,10 +31,13 @@ install_rerun_cli
 # the rapier test files (tests/rapier_*.rs, tests/ordinary_*.rs) built against rapier3d
 # 0.35.0-glamx0.2, the rapier bevy_rapier3d 0.36 pins, besides 0.36.1.
 cargo test --workspace
-# stickslip-bevy (the add-on to bevy_rapier) with its optional parts: contact gizmos (`debug`)
-# and scenario files as bevy_rapier entities (`scenario`), their tests and doc tests, headless
-# (the windowed examples are built and run by scripts/bevy_screenshot.sh in .ci/run).
-cargo test -p stickslip-bevy --features debug,scenario
+# The bevy add-ons with their optional parts, headless: stickslip-bevy (bevy_rapier) with
+# contact gizmos (`debug`) and scenario files as bevy_rapier entities (`scenario`), and
+# stickslip-avian (avian3d) with its contact gizmos (`debug`); their tests and doc tests. One
+# invocation, so that one bevy build serves both (avian asks bevy_math for `approx`); the
+# windowed examples are built and run by scripts/bevy_screenshot.sh in .ci/run.
+cargo test -p stickslip-bevy -p stickslip-avian \
+    --features stickslip-bevy/debug,stickslip-bevy/scenario,stickslip-avian/debug
 cargo test -p stickslip --features parallel --test rapier_many_contacts --test rapier_popov --test rapier_snapshot --test rapier_drive --test shared_world --test rapier_recycling --test rapier_load_jump
 # The 2D adapter (rapier2d) with rapier's multi-threaded `parallel` feature as well.
 cargo test -p stickslip-rapier2d --features parallel --test snapshot --test shared_world --test stacks

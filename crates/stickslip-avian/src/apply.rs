@@ -9,7 +9,7 @@
 
 use crate::components::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
 use crate::key::{ContactKey, Part};
-use crate::pair_law::{PairLaws, side};
+use crate::pair_law::{PairLaws, Side, side};
 use crate::plugin::StickSlipAvianConfig;
 use crate::store::ContactStore;
 use avian3d::collision::narrow_phase::NarrowPhaseConfig;
@@ -132,7 +132,15 @@ pub(crate) fn apply(
                 &world.config.default_material,
             ),
         );
-        let law = laws.law(sides.0, sides.1);
+        // A pair of two plain avian colliders whose friction the app's own hooks changed
+        // (it is no longer the combination avian wrote) keeps the app's Coulomb friction.
+        let apps = matches!(sides, (Side::Plain(a), Side::Plain(b))
+            if pair.manifolds.iter().any(|m| m.friction != a.combine(b).dynamic_coefficient));
+        let law = if apps {
+            None
+        } else {
+            laws.law(sides.0, sides.1)
+        };
         let driven = surface != Vec3::ZERO || source.is_some();
         if law.is_none() && !driven {
             // avian's own Coulomb friction, untouched.
@@ -219,6 +227,8 @@ pub(crate) fn apply(
             );
             record.tick = tick;
             record.slip_speed = (slip[0].hypot(slip[1])) as f32;
+            record.point = manifold.points.iter().map(|p| p.point).sum::<Vec3>() / points;
+            record.normal = n;
             manifold.friction = record.state.limit;
             // The law's target is one for v₂ − v₁: avian's sign is the other.
             manifold.tangent_velocity = drive - Vec3::from_array(basis.lift(out.target));

@@ -58,12 +58,20 @@
 //! it. The law's state therefore does not depend on the substep count; the tests run at 6
 //! substeps and at 2 and 12.
 //!
+//! **The app's hooks.** They run first, on the pairs avian calls them for; stickslip sees what
+//! they left. A pair of two colliders without stickslip material whose `friction` the app's
+//! hook changed keeps it (avian's Coulomb friction at the app's coefficient); a pair with a
+//! stickslip material gets the material's law; a `tangent_velocity` the hook set is the
+//! surface's motion the law works against.
+//!
 //! Contacts are keyed by their collider entities and manifold: a despawned collider or a
 //! separated pair leaves no state after the tick it is gone in.
 #![warn(missing_docs)]
 
 mod apply;
 mod components;
+#[cfg(feature = "debug")]
+pub mod debug;
 mod key;
 mod measure;
 mod pair_law;

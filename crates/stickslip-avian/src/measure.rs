@@ -72,6 +72,8 @@ pub(crate) fn measure(
             friction: -Vec3::from_array(record.measured.mu) * f_n as f32,
             limit: record.state.limit,
             slip_speed: record.slip_speed,
+            point: record.point,
+            normal: record.normal,
         });
         if let Some(to) = regime
             && record.published != to.code()

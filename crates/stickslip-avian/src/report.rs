@@ -22,6 +22,10 @@ pub struct AvianContact {
     pub limit: f32,
     /// Slip speed of the touching points at the start of the tick (m/s).
     pub slip_speed: f32,
+    /// Where the contact is: the mean of its points (world, m).
+    pub point: Vec3,
+    /// Its normal (world, unit), from collider 1 towards collider 2.
+    pub normal: Vec3,
 }
 
 /// The contacts stickslip stepped in the last physics tick.

@@ -25,6 +25,9 @@ pub(crate) struct Record {
     pub tick: u64,
     /// The slip speed it was stepped with (m/s), for the read-back.
     pub slip_speed: f32,
+    /// Where it was (the mean of its points, world) and its normal, for the read-back.
+    pub point: Vec3,
+    pub normal: Vec3,
     /// The regime code last published (see `report`).
     pub published: u8,
 }
@@ -36,6 +39,8 @@ impl Default for Record {
             measured: Measured::default(),
             tick: 0,
             slip_speed: 0.0,
+            point: Vec3::ZERO,
+            normal: Vec3::ZERO,
             published: REGIME_NONE,
         }
     }

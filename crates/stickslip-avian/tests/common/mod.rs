@@ -83,3 +83,64 @@ pub fn velocity(app: &App, e: Entity) -> Vec3 {
         .get::<LinearVelocity>(e)
         .map_or(Vec3::NAN, |v| v.0)
 }
+
+/// Gravity tilted by `theta` about z (a slope of angle θ under a level floor).
+pub fn tilted_gravity(theta: f64) -> Gravity {
+    Gravity(Vec3::new(
+        (G * theta.sin()) as f32,
+        -(G * theta.cos()) as f32,
+        0.0,
+    ))
+}
+
+/// Tilts the app's gravity to `theta` (the floor becomes a slope of angle θ).
+pub fn tilt(app: &mut App, theta: f64) {
+    app.insert_resource(tilted_gravity(theta));
+}
+
+/// As [`app`], with the app's own collision hooks `H` in avian's plugins
+/// (`PhysicsPlugins::default().with_collision_hooks::<H>()`).
+pub fn app_with_hooks<H>(stickslip: bool, substeps: u32, theta: f64) -> App
+where
+    H: CollisionHooks + 'static,
+    for<'w, 's> bevy::ecs::system::SystemParamItem<'w, 's, H>: CollisionHooks,
+{
+    let mut app = App::new();
+    app.add_plugins((
+        MinimalPlugins,
+        TransformPlugin,
+        PhysicsPlugins::default().with_collision_hooks::<H>(),
+    ))
+    .insert_resource(Time::<Fixed>::from_hz(HZ))
+    .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f64(
+        1.0 / HZ,
+    )))
+    .insert_resource(SubstepCount(substeps))
+    .insert_resource(tilted_gravity(theta));
+    if stickslip {
+        app.add_plugins(StickSlipAvianPlugin::default());
+    }
+    app.finish();
+    app.cleanup();
+    // The first update only starts the clocks.
+    app.update();
+    app
+}
+
+/// A dynamic cuboid (full lengths `size`) at `at`, never sleeping.
+pub fn cuboid(app: &mut App, at: Vec3, size: Vec3, extra: impl Bundle) -> Entity {
+    app.world_mut()
+        .spawn((
+            RigidBody::Dynamic,
+            Collider::cuboid(size.x, size.y, size.z),
+            Transform::from_translation(at),
+            SleepingDisabled,
+            extra,
+        ))
+        .id()
+}
+
+/// The body's rotation.
+pub fn rotation(app: &App, e: Entity) -> Quat {
+    app.world().get::<Rotation>(e).map_or(Quat::NAN, |r| r.0)
+}
