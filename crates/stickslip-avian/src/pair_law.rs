@@ -11,7 +11,7 @@
 use crate::components::StickSlipFriction;
 use avian3d::prelude::{CoefficientCombine, Friction};
 use bevy::prelude::*;
-use std::collections::HashMap;
+use bevy::platform::collections::HashMap;
 use stickslip_core::FrictionMaterial;
 use stickslip_core::law::{CombineRule, Coulomb, Law, Physical};
 use stickslip_core::sliding_curve::Curve;

@@ -2,7 +2,7 @@
 
 use crate::key::ContactKey;
 use bevy::prelude::*;
-use std::collections::HashMap;
+use bevy::platform::collections::HashMap;
 use stickslip_core::contact::{ContactState, REGIME_NONE, World};
 
 /// What the solver did at a contact in its last solve.
