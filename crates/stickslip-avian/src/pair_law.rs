@@ -10,8 +10,8 @@
 
 use crate::components::StickSlipFriction;
 use avian3d::prelude::{CoefficientCombine, Friction};
-use bevy::prelude::*;
 use bevy::platform::collections::HashMap;
+use bevy::prelude::*;
 use stickslip_core::FrictionMaterial;
 use stickslip_core::law::{CombineRule, Coulomb, Law, Physical};
 use stickslip_core::sliding_curve::Curve;

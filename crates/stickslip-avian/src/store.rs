@@ -1,8 +1,8 @@
 //! The friction state of every contact stickslip steps, and what the last solve measured.
 
 use crate::key::ContactKey;
-use bevy::prelude::*;
 use bevy::platform::collections::HashMap;
+use bevy::prelude::*;
 use stickslip_core::contact::{ContactState, REGIME_NONE, World};
 
 /// What the solver did at a contact in its last solve.
