@@ -1,4 +1,6 @@
-//! `stickslip sweep`: Popov and feeder maps over independent rapier worlds, in parallel.
+//! `stickslip sweep`: Popov and feeder maps over independent rapier worlds, in parallel; one
+//! shard of such a map (`--shard K/N`, task K of N of a job array), and `sweep merge`, which
+//! puts the shards back together into the unsharded output.
 
 use crate::{CliError, output};
 use clap::{Args, Subcommand, ValueEnum};
@@ -9,9 +11,10 @@ use stickslip_core::waveform::WaveformKind;
 use stickslip_figures::sweep::feeder::{
     AMPLITUDE_LIMITS, ANGLE_LIMITS, FREQUENCY_LIMITS, FeederSweep,
 };
-use stickslip_figures::sweep::output::{write_feeder, write_popov};
+use stickslip_figures::sweep::merge::{merge, shard_files};
 use stickslip_figures::sweep::popov::{ALPHA_LIMITS, BETA_LIMITS, Drive, PopovSweep};
-use stickslip_figures::sweep::{MAX_THREADS, Range};
+use stickslip_figures::sweep::shard_file::{Sharded, write_shard};
+use stickslip_figures::sweep::{MAX_THREADS, Range, Shard};
 
 /// Arguments of `stickslip sweep`.
 #[derive(Debug, Args)]
@@ -27,6 +30,20 @@ enum SweepKind {
     /// Vibratory-feeder transport speed over amplitude × frequency × throw angle in rapier,
     /// beside the rigid-body reference.
     Feeder(FeederArgs),
+    /// Put the shards of a sweep run with --shard K/N back together: the CSV, JSON and heat
+    /// maps of the unsharded run, byte for byte.
+    Merge(MergeArgs),
+}
+
+#[derive(Debug, Args)]
+struct MergeArgs {
+    /// Shard files (NAME.shard-K-of-N.json) or directories holding them: all N shards of one
+    /// sweep, written by this version.
+    #[arg(required = true, value_name = "FILES|DIR")]
+    inputs: Vec<PathBuf>,
+    /// Directory for the merged CSV, JSON and heat maps (created if missing).
+    #[arg(long, default_value = "sweep")]
+    out: PathBuf,
 }
 
 /// Options every sweep has.
@@ -38,6 +55,11 @@ struct Common {
     /// Directory for CSV, JSON and heat maps (created if missing).
     #[arg(long, default_value = "sweep")]
     out: PathBuf,
+    /// Compute only task K of N (1-based: K in 1..=N, e.g. $SLURM_ARRAY_TASK_ID with
+    /// --array=1-N): a fixed slice of the grid, written as NAME.shard-K-of-N.csv and .json
+    /// into --out; `stickslip sweep merge` puts the N shards together.
+    #[arg(long, value_name = "K/N")]
+    shard: Option<Shard>,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -137,15 +159,59 @@ fn progress(total: usize, json: bool) -> ProgressBar {
     bar
 }
 
-fn report(files: &[PathBuf], dir: &Path, json: bool) -> Result<(), CliError> {
+fn report(
+    files: &[PathBuf],
+    dir: &Path,
+    json: bool,
+    extra: serde_json::Value,
+) -> Result<(), CliError> {
     if json {
-        output::json(&serde_json::json!({ "out": dir, "files": files }))?;
+        let mut doc = serde_json::json!({ "out": dir, "files": files });
+        if let (Some(doc), serde_json::Value::Object(extra)) = (doc.as_object_mut(), extra) {
+            doc.extend(extra);
+        }
+        output::json(&doc)?;
     } else {
         for f in files {
             out!("{}", f.display());
         }
     }
     Ok(())
+}
+
+/// Runs `sweep` (the whole grid, or the slice of `--shard`) and writes its output.
+fn execute<S: Sharded>(sweep: &S, common: &Common, json: bool) -> Result<(), CliError> {
+    let total = sweep.total()?;
+    let threads = threads(common.threads)?;
+    let indices = match common.shard {
+        Some(shard) => shard.indices(total),
+        None => (0..total).collect(),
+    };
+    let bar = progress(indices.len(), json);
+    let points = sweep.run_indices(&indices, threads, &|| bar.inc(1))?;
+    bar.finish_and_clear();
+    match common.shard {
+        Some(shard) => {
+            let files = write_shard(&common.out, sweep, shard, &points)?;
+            let extra = serde_json::json!({ "shard": shard.to_string(), "points": points.len() });
+            report(&files, &common.out, json, extra)
+        }
+        None => {
+            let files = sweep.write(&common.out, &points)?;
+            report(&files, &common.out, json, serde_json::Value::Null)
+        }
+    }
+}
+
+/// Runs `stickslip sweep merge`.
+fn run_merge(args: &MergeArgs, json: bool) -> Result<(), CliError> {
+    let refuse =
+        |e: stickslip_figures::sweep::merge::MergeError| CliError::Io(format!("cannot merge: {e}"));
+    let files = shard_files(&args.inputs).map_err(refuse)?;
+    let merged = merge(&files).map_err(refuse)?;
+    let written = merged.write(&args.out)?;
+    let extra = serde_json::json!({ "shards": files, "points": merged.len() });
+    report(&written, &args.out, json, extra)
 }
 
 /// Runs `stickslip sweep`.
@@ -171,13 +237,7 @@ pub fn run(args: &SweepArgs, json: bool) -> Result<(), CliError> {
                     DriveName::Load => Drive::Load,
                 },
             };
-            let total = sweep.validate()?;
-            let threads = threads(a.common.threads)?;
-            let bar = progress(total, json);
-            let points = sweep.run(threads, &|| bar.inc(1))?;
-            bar.finish_and_clear();
-            let files = write_popov(&a.common.out, &sweep, &points)?;
-            report(&files, &a.common.out, json)
+            execute(&sweep, &a.common, json)
         }
         SweepKind::Feeder(a) => {
             let (settle, measure) = a
@@ -213,13 +273,8 @@ pub fn run(args: &SweepArgs, json: bool) -> Result<(), CliError> {
                 settle,
                 measure,
             };
-            let total = sweep.validate()?;
-            let threads = threads(a.common.threads)?;
-            let bar = progress(total, json);
-            let points = sweep.run(threads, &|| bar.inc(1))?;
-            bar.finish_and_clear();
-            let files = write_feeder(&a.common.out, &sweep, &points)?;
-            report(&files, &a.common.out, json)
+            execute(&sweep, &a.common, json)
         }
+        SweepKind::Merge(a) => run_merge(a, json),
     }
 }

@@ -3,7 +3,7 @@
 //! (`stickslip_rapier::scenes::feeder_speed`), beside the rigid-body reference
 //! (`stickslip_core::feeder::VibratoryFeeder`).
 
-use super::{Range, check_total, run_parallel};
+use super::{Range, check_total, run_parallel, select};
 use crate::FigureError;
 use serde::Serialize;
 use stickslip_core::feeder::VibratoryFeeder;
@@ -139,8 +139,21 @@ impl FeederSweep {
         threads: usize,
         tick: &(dyn Fn() + Sync),
     ) -> Result<Vec<FeederPoint>, FigureError> {
+        let total = self.validate()?;
+        self.run_indices(&(0..total).collect::<Vec<_>>(), threads, tick)
+    }
+
+    /// Runs the points at `indices` of [`FeederSweep::points`] (e.g. one shard's) on
+    /// `threads` workers, calling `tick` after each point; results come back in the order of
+    /// `indices`.
+    pub fn run_indices(
+        &self,
+        indices: &[usize],
+        threads: usize,
+        tick: &(dyn Fn() + Sync),
+    ) -> Result<Vec<FeederPoint>, FigureError> {
         self.validate()?;
-        let points = self.points();
+        let points = select(&self.points(), indices)?;
         run_parallel(&points, threads, tick, |&(a, f, g)| {
             let feeder = VibratoryFeeder::new(a * 1e-3, f, g.to_radians(), self.mu, 9.81)?;
             Ok(FeederPoint {

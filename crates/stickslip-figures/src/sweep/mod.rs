@@ -7,13 +7,22 @@
 //! - [`run_parallel`]: maps a function over the points on an explicit rayon pool; every point
 //!   builds its own world, so the results do not depend on the number of threads.
 //! - [`output`]: CSV, JSON and heat maps.
+//! - [`shard`]: task `K` of `N` (`--shard K/N`) computes a fixed, balanced slice of the grid;
+//!   [`shard_file`] writes it with what a merge needs (grid, fingerprint, version, slice) in
+//!   the [`exact`] JSON form; [`merge`] checks the shards and puts the full sweep back
+//!   together, so its output is byte for byte the unsharded run's.
 
+pub mod exact;
 pub mod feeder;
+pub mod merge;
 pub mod output;
 pub mod popov;
 mod range;
+pub mod shard;
+pub mod shard_file;
 
 pub use range::{MAX_RANGE_POINTS, Range};
+pub use shard::Shard;
 
 use crate::FigureError;
 use rayon::prelude::*;
@@ -35,6 +44,19 @@ pub fn check_total(counts: &[usize]) -> Result<usize, FigureError> {
         });
     }
     Ok(total as usize)
+}
+
+/// The items at `indices`, in that order; an index off the end is an error.
+fn select<T: Copy>(items: &[T], indices: &[usize]) -> Result<Vec<T>, FigureError> {
+    indices
+        .iter()
+        .map(|&i| {
+            items.get(i).copied().ok_or_else(|| FigureError::Option {
+                name: "--shard".into(),
+                reason: format!("point {i} is not on a grid of {} points", items.len()),
+            })
+        })
+        .collect()
 }
 
 /// Maps `f` over `items` on a pool of `threads` workers (1..=[`MAX_THREADS`]), calling `tick`

@@ -12,7 +12,7 @@ use std::path::{Path, PathBuf};
 /// Heat-map size (px).
 pub const HEATMAP_SIZE: (u32, u32) = (900, 600);
 
-fn write(path: PathBuf, text: &str) -> Result<PathBuf, FigureError> {
+pub(crate) fn write(path: PathBuf, text: &str) -> Result<PathBuf, FigureError> {
     std::fs::write(&path, text).map_err(|e| FigureError::io(&path, e))?;
     Ok(path)
 }
@@ -27,14 +27,8 @@ struct Doc<'a, S, P> {
     points: &'a [P],
 }
 
-/// Writes `popov.csv`, `popov.json` and `popov_WAVEFORM.png` (rapier's μ̄ over β × α, or
-/// theory when rapier was not measured) into `dir`; returns the paths.
-pub fn write_popov(
-    dir: &Path,
-    sweep: &PopovSweep,
-    points: &[PopovPoint],
-) -> Result<Vec<PathBuf>, FigureError> {
-    std::fs::create_dir_all(dir).map_err(|e| FigureError::io(dir, e))?;
+/// The CSV table of Popov points (`popov.csv`), one row per point in the given order.
+pub fn popov_csv(points: &[PopovPoint]) -> String {
     let mut csv = String::from("waveform,beta,alpha,theory,rapier,relative_error\n");
     for p in points {
         let err = p.rapier.map(|r| (r - p.theory) / p.theory);
@@ -49,8 +43,40 @@ pub fn write_popov(
             opt(err)
         );
     }
+    csv
+}
+
+/// The CSV table of feeder points (`feeder.csv`), one row per point in the given order.
+pub fn feeder_csv(points: &[FeederPoint]) -> String {
+    let mut csv = String::from(
+        "amplitude_mm,frequency_hz,angle_deg,throw_number,rapier,reference,relative_error\n",
+    );
+    for p in points {
+        let _ = writeln!(
+            csv,
+            "{:e},{:e},{:e},{:e},{:e},{:e},{:e}",
+            p.amplitude_mm,
+            p.frequency,
+            p.angle_deg,
+            p.throw_number,
+            p.rapier,
+            p.reference,
+            (p.rapier - p.reference) / p.reference
+        );
+    }
+    csv
+}
+
+/// Writes `popov.csv`, `popov.json` and `popov_WAVEFORM.png` (rapier's μ̄ over β × α, or
+/// theory when rapier was not measured) into `dir`; returns the paths.
+pub fn write_popov(
+    dir: &Path,
+    sweep: &PopovSweep,
+    points: &[PopovPoint],
+) -> Result<Vec<PathBuf>, FigureError> {
+    std::fs::create_dir_all(dir).map_err(|e| FigureError::io(dir, e))?;
     let mut files = vec![
-        write(dir.join("popov.csv"), &csv)?,
+        write(dir.join("popov.csv"), &popov_csv(points))?,
         write(
             dir.join("popov.json"),
             &serde_json::to_string_pretty(&Doc { sweep, points })?,
@@ -94,24 +120,8 @@ pub fn write_feeder(
     points: &[FeederPoint],
 ) -> Result<Vec<PathBuf>, FigureError> {
     std::fs::create_dir_all(dir).map_err(|e| FigureError::io(dir, e))?;
-    let mut csv = String::from(
-        "amplitude_mm,frequency_hz,angle_deg,throw_number,rapier,reference,relative_error\n",
-    );
-    for p in points {
-        let _ = writeln!(
-            csv,
-            "{:e},{:e},{:e},{:e},{:e},{:e},{:e}",
-            p.amplitude_mm,
-            p.frequency,
-            p.angle_deg,
-            p.throw_number,
-            p.rapier,
-            p.reference,
-            (p.rapier - p.reference) / p.reference
-        );
-    }
     let mut files = vec![
-        write(dir.join("feeder.csv"), &csv)?,
+        write(dir.join("feeder.csv"), &feeder_csv(points))?,
         write(
             dir.join("feeder.json"),
             &serde_json::to_string_pretty(&Doc { sweep, points })?,

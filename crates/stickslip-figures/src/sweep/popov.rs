@@ -2,9 +2,9 @@
 //! worlds (`stickslip_rapier::scenes::PopovDrag`, the setup of `tests/rapier_popov.rs` with
 //! the swept α).
 
-use super::{Range, check_total, run_parallel};
+use super::{Range, check_total, run_parallel, select};
 use crate::FigureError;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use stickslip_core::popov;
 use stickslip_core::waveform::{Waveform, WaveformKind};
 use stickslip_rapier::VibrationMode;
@@ -16,7 +16,7 @@ pub const BETA_LIMITS: (f64, f64) = (0.01, 100.0);
 pub const ALPHA_LIMITS: (f64, f64) = (0.01, 1.0);
 
 /// How rapier modulates the normal force.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Drive {
     /// A time-resolved normal vibration source on the plate (400 steps per period).
@@ -118,8 +118,20 @@ impl PopovSweep {
         threads: usize,
         tick: &(dyn Fn() + Sync),
     ) -> Result<Vec<PopovPoint>, FigureError> {
+        let total = self.validate()?;
+        self.run_indices(&(0..total).collect::<Vec<_>>(), threads, tick)
+    }
+
+    /// Runs the points at `indices` of [`PopovSweep::points`] (e.g. one shard's) on `threads`
+    /// workers, calling `tick` after each point; results come back in the order of `indices`.
+    pub fn run_indices(
+        &self,
+        indices: &[usize],
+        threads: usize,
+        tick: &(dyn Fn() + Sync),
+    ) -> Result<Vec<PopovPoint>, FigureError> {
         self.validate()?;
-        let points = self.points();
+        let points = select(&self.points(), indices)?;
         run_parallel(&points, threads, tick, |&(kind, beta, alpha)| {
             let w = Waveform::from(kind);
             let setup = PopovDrag {
