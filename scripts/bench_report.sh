@@ -6,7 +6,9 @@
 #      plane) plus their extra pass (contacts, allocations per step, live heap, interleaved
 #      timings) into $OUT/cost.json;
 #   2. the report binary `benches/src/bin/bench_report` (accuracy in rapier worlds, the seed's EP
-#      versus Regul comparison), which reads both and writes the markdown.
+#      versus Regul comparison), which reads both and writes the markdown;
+#   3. the avian add-on's bench `crates/stickslip-avian/benches/avian_step.rs`, its section
+#      appended by scripts/avian_bench_section.py.
 #
 # Usage: scripts/bench_report.sh [--quick] [--out FILE]
 #   --quick   skip the ~100k-contact plane (the scaling target is then reported as not run)
@@ -64,5 +66,10 @@ bench_s=$((t2 - t1))
     --profile docs/bench-profile.md \
     --note "Build (bench + report binaries, incremental): $build_s s; criterion benches and their extra pass: $bench_s s$([[ $full == 1 ]] && echo ', ~100k-contact plane included' || echo ', ~100k-contact plane skipped (--quick)')." \
     --out "$out"
+# The avian add-on's step cost beside plain avian (its own package: avian and bevy stay out of
+# stickslip-benches), appended as its own section.
+# shellcheck disable=SC2086
+cargo bench ${CARGO_FLAGS:-} -p stickslip-avian --bench avian_step | tee "$work/avian.log"
+python3 scripts/avian_bench_section.py "$CRITERION_HOME" >> "$out"
 t3=$(secs)
-echo "build $build_s s, benches $bench_s s, report $((t3 - t2)) s -> $out"
+echo "build $build_s s, benches $bench_s s, report and avian $((t3 - t2)) s -> $out"
