@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# The bevy examples (bevy_rapier apps with stickslip, crate stickslip-bevy) in a real window
-# under Xvfb (software Vulkan): `vibrating_conveyor` renders FRAMES frames and saves the window
-# to OUT; `view` opens scenarios/incline.toml the same way (saved beside OUT as *_view.png);
-# `elliptical_drive` likewise (*_drive.png). Each picture is checked not to be blank.
+# The bevy examples in a real window under Xvfb (software Vulkan). bevy_rapier apps with
+# stickslip (crate stickslip-bevy): `vibrating_conveyor` renders FRAMES frames and saves the
+# window to OUT; `view` opens scenarios/incline.toml the same way (saved beside OUT as
+# *_view.png); `elliptical_drive` likewise (*_drive.png). The avian app (crate stickslip-avian):
+# `avian_conveyor` after 120 frames (4 s: its vibrating trough's parts are past their start-up
+# transient), saved as *_avian.png. Each picture is checked not to be blank.
 #   bash scripts/bevy_screenshot.sh [OUT] [FRAMES]
 # Installs what it needs from Debian's packages (xvfb, Mesa's Vulkan driver) when missing.
 set -euo pipefail
@@ -17,13 +19,16 @@ if ! command -v xvfb-run >/dev/null || [ ! -e /usr/share/vulkan/icd.d/lvp_icd.x8
         libxrandr2 libxi6 libxkbcommon-x11-0 >/dev/null
 fi
 
-cargo build -p stickslip-bevy --features window,scenario --example vibrating_conveyor \
-    --example view --example elliptical_drive
+# One invocation for both crates: bevy builds once, with the features of both.
+cargo build -p stickslip-bevy -p stickslip-avian \
+    --features stickslip-bevy/window,stickslip-bevy/scenario,stickslip-avian/window \
+    --example vibrating_conveyor --example view --example elliptical_drive --example avian_conveyor
 export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
 chmod 700 "$XDG_RUNTIME_DIR"
 VIEW_OUT="${OUT%.png}_view.png"
 RAPIER_OUT="${OUT%.png}_drive.png"
-rm -f "$OUT" "$VIEW_OUT" "$RAPIER_OUT"
+AVIAN_OUT="${OUT%.png}_avian.png"
+rm -f "$OUT" "$VIEW_OUT" "$RAPIER_OUT" "$AVIAN_OUT"
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
     "$CARGO_TARGET_DIR/debug/examples/vibrating_conveyor" --screenshot "$OUT" --frames "$FRAMES"
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
@@ -32,9 +37,11 @@ timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
     "$CARGO_TARGET_DIR/debug/examples/elliptical_drive" --screenshot "$RAPIER_OUT" \
     --frames "$FRAMES"
+timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
+    "$CARGO_TARGET_DIR/debug/examples/avian_conveyor" --screenshot "$AVIAN_OUT" --frames 120
 
 # Not blank: a PNG whose pixels vary (decoded with the standard library only).
-for png in "$OUT" "$VIEW_OUT" "$RAPIER_OUT"; do
+for png in "$OUT" "$VIEW_OUT" "$RAPIER_OUT" "$AVIAN_OUT"; do
 python3 - "$png" <<'PY'
 import struct, sys, zlib
 data = open(sys.argv[1], "rb").read()

@@ -30,13 +30,11 @@ impl Default for StickSlipGizmos {
     }
 }
 
-/// The colour of a regime: green sticking, orange stick-slip, red sliding.
+/// The colour of a regime (`Regime::srgb`, shared with rerun): green sticking, orange
+/// stick-slip, red sliding.
 pub fn regime_color(regime: Regime) -> Color {
-    match regime {
-        Regime::Sticking => Color::srgb(0.2, 0.85, 0.3),
-        Regime::StickSlip => Color::srgb(1.0, 0.6, 0.1),
-        Regime::Sliding => Color::srgb(0.95, 0.2, 0.2),
-    }
+    let [r, g, b] = regime.srgb();
+    Color::srgb_u8(r, g, b)
 }
 
 /// Draws the contacts in `PostUpdate` after transform propagation; does nothing without

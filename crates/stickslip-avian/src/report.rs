@@ -43,9 +43,7 @@ impl StickSlipContacts {
     /// The most slippery regime among the contacts of the collider `entity` (sliding over
     /// stick-slip over sticking), or `None`: e.g. to colour a part.
     pub fn regime_of(&self, entity: Entity) -> Option<Regime> {
-        self.of(entity)
-            .filter_map(|c| c.regime)
-            .max_by_key(|r| r.code())
+        Regime::most_slippery(self.of(entity).filter_map(|c| c.regime))
     }
 }
 

@@ -8,15 +8,12 @@
 //! of β_c, for the sine, both sawtooth and the square wave — measured from the sled's
 //! momentum and from the read-back.
 
+mod common;
+
 use avian3d::prelude::*;
 use bevy::prelude::*;
-use bevy::time::TimeUpdateStrategy;
-use bevy::transform::TransformPlugin;
-use std::time::Duration;
-use stickslip_avian::{
-    FrictionMaterial, StickSlipAvianPlugin, StickSlipContacts, StickSlipFriction,
-    StickSlipVibration,
-};
+use common::*;
+use stickslip_avian::{FrictionMaterial, StickSlipContacts, StickSlipFriction, StickSlipVibration};
 use stickslip_core::contact::{Amplitude, VibrationDirection, VibrationMode, VibrationSource};
 use stickslip_core::law::Law;
 use stickslip_core::popov;
@@ -31,31 +28,12 @@ const F_MEAN: f64 = 9.81;
 const FREQUENCY: f64 = 5.0;
 const TICKS_PER_PERIOD: usize = 40;
 
-fn app(hz: f64) -> App {
-    let mut app = App::new();
-    app.add_plugins((
-        MinimalPlugins,
-        TransformPlugin,
-        PhysicsPlugins::default(),
-        StickSlipAvianPlugin::default(),
-    ))
-    .insert_resource(Time::<Fixed>::from_hz(hz))
-    .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f64(
-        1.0 / hz,
-    )))
-    .insert_resource(Gravity(Vec3::ZERO));
-    app.finish();
-    app.cleanup();
-    app.update();
-    app
-}
-
 /// (μ̄ from the sled's momentum, μ̄ from the read-back) at dimensionless speed `beta` under
 /// averaged normal vibration of waveform `w`.
 fn drag(w: &Waveform, beta: f64) -> (f64, f64) {
     let hz = FREQUENCY * TICKS_PER_PERIOD as f64;
     let dt = 1.0 / hz;
-    let mut app = app(hz);
+    let mut app = app_at(true, hz, 6, Gravity(Vec3::ZERO));
     let law = Law::elasto_plastic(C, MU0, MU0, Curve::constant(MU0).unwrap()).unwrap();
     let material = StickSlipFriction(Some(FrictionMaterial::new(law)));
     let source = VibrationSource::new(
@@ -67,40 +45,18 @@ fn drag(w: &Waveform, beta: f64) -> (f64, f64) {
         VibrationMode::Averaged,
     )
     .unwrap();
-    app.world_mut().spawn((
-        RigidBody::Static,
-        Collider::cuboid(400.0, 0.2, 20.0),
-        Transform::from_xyz(0.0, -0.1, 0.0),
-        material.clone(),
-        StickSlipVibration(source),
-    ));
+    floor(&mut app, (material.clone(), StickSlipVibration(source)));
     let mass = 1000.0;
-    let sled = app
-        .world_mut()
-        .spawn((
-            RigidBody::Dynamic,
-            Collider::cuboid(0.5, 0.1, 0.5),
-            Mass(mass as f32),
-            Transform::from_xyz(0.0, 0.05, 0.0),
-            LockedAxes::ROTATION_LOCKED,
-            SleepingDisabled,
-            ConstantForce(Vec3::new(0.0, -F_MEAN as f32, 0.0)),
-            material,
-        ))
-        .id();
+    let sled = sled(&mut app, mass, F_MEAN, material);
     let v0 = beta * MU0 * ALPHA * FREQUENCY / C;
     // The contact spring reaches the cone after ~(1 − α)/(αβ) periods.
     let warm = ((1.0 - ALPHA) / (ALPHA * beta)).ceil() as usize + 3;
     let periods = 4;
     let (mut impulse, mut fx, mut fz) = (0.0, 0.0, 0.0);
     for k in 0..(warm + periods) * TICKS_PER_PERIOD {
-        let vy = app.world().get::<LinearVelocity>(sled).unwrap().y;
-        app.world_mut()
-            .entity_mut(sled)
-            .insert(LinearVelocity(Vec3::new(v0 as f32, vy, 0.0)));
-        app.update();
+        drag_tick(&mut app, sled, v0);
         if k >= warm * TICKS_PER_PERIOD {
-            let vx = app.world().get::<LinearVelocity>(sled).unwrap().x as f64;
+            let vx = velocity(&app, sled).x as f64;
             impulse += mass * (v0 - vx);
             for c in app.world().resource::<StickSlipContacts>().of(sled) {
                 fx += c.friction.x.abs() as f64;

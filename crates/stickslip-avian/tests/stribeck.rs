@@ -39,26 +39,13 @@ fn law() -> Law {
 /// over 1 s after the contact has slid 25 elastic ranges (and at least 0.5 s); with `plain`,
 /// plain avian friction of that coefficient instead (read-back NaN).
 fn dragged(v: f64, substeps: u32, plain: Option<f32>) -> (f64, f64) {
-    let mut app = app(plain.is_none(), substeps, 0.0);
-    app.insert_resource(Gravity(Vec3::ZERO));
+    let mut app = app_at(plain.is_none(), HZ, substeps, Gravity(Vec3::ZERO));
     let mu_max = curve().at_rest();
     let mass = mu_max * F * DT / (0.01 * v);
     let material = StickSlipFriction(Some(FrictionMaterial::new(law())));
     let friction = Friction::new(plain.unwrap_or(0.5));
     let plate = floor(&mut app, friction);
-    let sled = app
-        .world_mut()
-        .spawn((
-            RigidBody::Dynamic,
-            Collider::cuboid(0.5, 0.1, 0.5),
-            Mass(mass as f32),
-            Transform::from_xyz(0.0, 0.05, 0.0),
-            LockedAxes::ROTATION_LOCKED,
-            SleepingDisabled,
-            ConstantForce(Vec3::new(0.0, -F as f32, 0.0)),
-            friction,
-        ))
-        .id();
+    let sled = sled(&mut app, mass, F, friction);
     if plain.is_none() {
         app.world_mut().entity_mut(plate).insert(material.clone());
         app.world_mut().entity_mut(sled).insert(material);
@@ -67,11 +54,7 @@ fn dragged(v: f64, substeps: u32, plain: Option<f32>) -> (f64, f64) {
     let measure = HZ as usize;
     let (mut impulse, mut reported, mut normal) = (0.0, 0.0, 0.0);
     for k in 0..settle + measure {
-        let vy = velocity(&app, sled).y;
-        app.world_mut()
-            .entity_mut(sled)
-            .insert(LinearVelocity(Vec3::new(v as f32, vy, 0.0)));
-        app.update();
+        drag_tick(&mut app, sled, v);
         if k >= settle {
             impulse += mass * (v - velocity(&app, sled).x as f64);
             let Some(contacts) = app.world().get_resource::<StickSlipContacts>() else {

@@ -12,6 +12,10 @@
 //!    along a 30° throw angle (throw number Γ = 1.36 > 1): the parts hop forward. The HUD
 //!    shows the point-mass reference of `stickslip_core::feeder` beside the measured speed.
 //!
+//! Like with like: a part's speed counts from the end of its start-up transient to now (on
+//! lane 3 over whole drive periods), over parts that have not been restarted since; the HUD
+//! says "settling" until the first parts are through it.
+//!
 //! Parts are coloured by the regime of their contacts (green sticking, orange stick-slip, red
 //! sliding, white in flight); the contact gizmos show each contact's friction force (arrow in
 //! the regime's colour) and normal (white). Parts that reach the end of a lane start over.
@@ -36,8 +40,9 @@ use bevy::diagnostic::FrameCount;
 use bevy::prelude::*;
 use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured, save_to_disk};
 use bevy::time::TimeUpdateStrategy;
+use bevy::transform::systems::mark_dirty_trees;
+use bevy_rapier3d::plugin::RapierTransformPropagateSet;
 use bevy_rapier3d::prelude::*;
-use std::collections::VecDeque;
 use std::f32::consts::FRAC_PI_6;
 use std::time::Duration;
 use stickslip_bevy::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
@@ -78,8 +83,14 @@ const PARTS: usize = 5;
 const SPACING: f32 = 0.2;
 /// Half extent of a part (m).
 const HALF: f32 = 0.04;
-/// Window of the measured transport speed (s of simulated time).
-const SPEED_WINDOW: f64 = 1.0;
+/// Start-up transient of a part (s of simulated time) before its speed counts: lane 1's
+/// contacts form in a few steps; on lane 2 the speed approaches Popov's v* as exp(−t/τ),
+/// τ ≈ 0.35 s here, and is within 1.5 % of it after 1.5 s; lane 3's parts hop at their
+/// steady mean speed after ~0.3 s (6 drive periods).
+const SETTLE: [f64; 3] = [0.2, 1.5, 0.4];
+/// Physics steps between a lane's speed samples: every step, and on lane 3 one drive period
+/// (a hopping part's mean speed is its displacement over whole periods).
+const SAMPLE_STEPS: [u64; 3] = [1, 1, (PHYSICS_HZ / FEEDER.1 as f64) as u64];
 
 fn main() -> AppExit {
     let options = match Options::parse(std::env::args().skip(1)) {
@@ -116,14 +127,21 @@ fn main() -> AppExit {
     .insert_resource(Time::<Fixed>::from_hz(PHYSICS_HZ))
     .insert_resource(ClearColor(Color::srgb(0.09, 0.1, 0.12)))
     .insert_resource(Theory::compute())
-    .init_resource::<Speeds>()
     .add_systems(Startup, (setup, spawn_parts).chain())
+    // Before the step (bevy_rapier's in FixedPostUpdate): the trough's target, restarts.
+    .add_systems(FixedUpdate, (drive_feeder, restart_parts))
+    // bevy_rapier 0.36 propagates transforms itself before each fixed step, but without
+    // bevy's `mark_dirty_trees`: a body with children (the trough and its walls) then has a
+    // GlobalTransform, hence a kinematic target, updated once per frame, not per step — at
+    // 100 steps a frame the trough would jerk once per frame and the parts hop at 0.12 m/s
+    // instead of 0.146.
     .add_systems(
-        FixedUpdate,
-        (
-            drive_feeder.before(PhysicsSet::SyncBackend),
-            (tally_regimes, measure_speeds, restart_parts).after(PhysicsSet::Writeback),
-        ),
+        FixedPostUpdate,
+        mark_dirty_trees.before(RapierTransformPropagateSet),
+    )
+    .add_systems(
+        FixedPostUpdate,
+        (tally_regimes, measure).after(PhysicsSet::Writeback),
     )
     .add_systems(
         Update,
@@ -209,12 +227,32 @@ impl Theory {
 
 /// A part, on lane 0, 1 or 2.
 #[derive(Component)]
-#[require(RegimeTally, LastAlong)]
+#[require(RegimeTally, Run)]
 struct Part(usize);
 
-/// A part's position along its lane after the previous step (m).
+/// A part's run since it was (re)started: when, and (time, position along the lane) at the
+/// first sample after its start-up transient and at the last one.
 #[derive(Component, Default)]
-struct LastAlong(Option<f32>);
+struct Run {
+    started: f64,
+    first: Option<(f64, f32)>,
+    last: Option<(f64, f32)>,
+}
+
+impl Run {
+    fn restart(&mut self, now: f64) {
+        *self = Run {
+            started: now,
+            ..default()
+        };
+    }
+
+    /// Mean speed along the lane over the settled part of the run, if it has one.
+    fn speed(&self) -> Option<f32> {
+        let ((t0, x0), (t1, x1)) = (self.first?, self.last?);
+        (t1 > t0).then(|| (x1 - x0) / (t1 - t0) as f32)
+    }
+}
 
 /// How many physics steps since the last frame a part spent sticking, in stick-slip, sliding
 /// or without contact: a frame spans many steps (100 at 30 frames/s), so its colour is the
@@ -248,19 +286,15 @@ struct Palette {
     part: Handle<Mesh>,
 }
 
-/// The lanes' mean speed along their direction, per physics step, over the last second.
-#[derive(Resource, Default)]
-struct Speeds {
-    samples: [VecDeque<(f64, f32)>; 3],
-}
-
-impl Speeds {
-    /// Time-averaged mean speed of lane `i` (m/s): the parts' displacement rate, also for
-    /// hopping parts and across restarts.
-    fn mean(&self, i: usize) -> f32 {
-        let s = &self.samples[i];
-        s.iter().map(|(_, v)| v).sum::<f32>() / s.len().max(1) as f32
-    }
+/// Lane `lane`'s mean speed over its parts' settled runs (m/s), and how many parts count.
+fn lane_speed(parts: &Query<(&Part, &Run)>, lane: usize) -> Option<(f32, usize)> {
+    let speeds: Vec<f32> = parts
+        .iter()
+        .filter(|(p, _)| p.0 == lane)
+        .filter_map(|(_, run)| run.speed())
+        .collect();
+    let n = speeds.len();
+    (n > 0).then(|| (speeds.iter().sum::<f32>() / n as f32, n))
 }
 
 /// Downhill (lanes 1, 2) or forward (lane 3) direction, and the lane's pose.
@@ -436,13 +470,17 @@ fn setup(
 }
 
 /// Five parts per lane at the lanes' upper (or rear) end, at rest.
-fn spawn_parts(mut commands: Commands, palette: Res<Palette>) {
+fn spawn_parts(mut commands: Commands, palette: Res<Palette>, time: Res<Time<Fixed>>) {
     for lane in 0..3 {
         let (_, rotation, _) = lane_frame(lane);
         for k in 0..PARTS {
             let along = START + SPACING * k as f32;
             commands.spawn((
                 Part(lane),
+                Run {
+                    started: time.elapsed_secs_f64(),
+                    ..default()
+                },
                 Mesh3d(palette.part.clone()),
                 MeshMaterial3d(palette.airborne.clone()),
                 RigidBody::Dynamic,
@@ -473,43 +511,36 @@ fn drive_feeder(time: Res<Time>, mut troughs: Query<(&FeederTrough, &mut Transfo
     }
 }
 
-/// Samples each lane's mean speed along the lane after every step, from the parts'
-/// displacements (a jump back to the start is not a displacement).
-fn measure_speeds(
-    time: Res<Time>,
-    mut parts: Query<(&Part, &Transform, &mut LastAlong)>,
-    mut speeds: ResMut<Speeds>,
-) {
-    let (t, dt) = (time.elapsed_secs_f64(), time.delta_secs());
-    let mut sum = [0.0f32; 3];
-    let mut n = [0usize; 3];
-    for (part, transform, mut last) in &mut parts {
+/// After every step: each part's position along its lane, once its start-up transient is
+/// over, at the lane's sampling steps.
+fn measure(time: Res<Time>, mut parts: Query<(&Part, &Transform, &mut Run)>) {
+    let t = time.elapsed_secs_f64();
+    let step = (t * PHYSICS_HZ).round() as u64;
+    for (part, transform, mut run) in &mut parts {
+        if t - run.started < SETTLE[part.0] || !step.is_multiple_of(SAMPLE_STEPS[part.0]) {
+            continue;
+        }
         let (dir, _, centre) = lane_frame(part.0);
-        let along = (transform.translation - centre).dot(dir);
-        if let Some(before) = last.0.replace(along)
-            && (along - before).abs() < 0.5
-        {
-            sum[part.0] += along - before;
-            n[part.0] += 1;
+        let sample = (t, (transform.translation - centre).dot(dir));
+        if run.first.is_none() {
+            run.first = Some(sample);
         }
-    }
-    for lane in 0..3 {
-        let s = &mut speeds.samples[lane];
-        s.push_back((t, sum[lane] / n[lane].max(1) as f32 / dt));
-        while s.front().is_some_and(|(t0, _)| t - t0 > SPEED_WINDOW) {
-            s.pop_front();
-        }
+        run.last = Some(sample);
     }
 }
 
-/// A part past the end of its lane starts over at the top, at rest.
-fn restart_parts(mut parts: Query<(&Part, &mut Transform, &mut Velocity)>) {
-    for (part, mut transform, mut velocity) in &mut parts {
+/// A part past the end of its lane starts over at the top, at rest, with a new run.
+fn restart_parts(
+    time: Res<Time>,
+    mut parts: Query<(&Part, &mut Transform, &mut Velocity, &mut Run)>,
+) {
+    for (part, mut transform, mut velocity, mut run) in &mut parts {
         let (dir, rotation, centre) = lane_frame(part.0);
         if (transform.translation - centre).dot(dir) > END {
             *transform = Transform::from_translation(on_lane(part.0, START, HALF + 0.005))
                 .with_rotation(rotation);
             *velocity = Velocity::zero();
+            run.restart(time.elapsed_secs_f64());
         }
     }
 }
@@ -519,11 +550,11 @@ fn keys(
     mut commands: Commands,
     keys: Res<ButtonInput<KeyCode>>,
     mut time: ResMut<Time<Virtual>>,
+    fixed: Res<Time<Fixed>>,
     mut gizmos: ResMut<GizmoConfigStore>,
     popov_base: Query<(Entity, Has<StickSlipVibration>), With<PopovBase>>,
     mut feeder: Query<&mut FeederTrough>,
-    parts: Query<Entity, With<Part>>,
-    mut speeds: ResMut<Speeds>,
+    mut parts: Query<(Entity, &Part, &mut Run)>,
 ) {
     if keys.just_pressed(KeyCode::KeyV) {
         for (e, on) in &popov_base {
@@ -535,6 +566,12 @@ fn keys(
         }
         for mut trough in &mut feeder {
             trough.on = !trough.on;
+        }
+        // Lanes 2 and 3 start new runs: the old ones measured the other regime.
+        for (_, part, mut run) in &mut parts {
+            if part.0 > 0 {
+                run.restart(fixed.elapsed_secs_f64());
+            }
         }
     }
     if keys.just_pressed(KeyCode::Space) {
@@ -548,10 +585,9 @@ fn keys(
         gizmos.config_mut::<StickSlipGizmos>().0.enabled ^= true;
     }
     if keys.just_pressed(KeyCode::KeyR) {
-        for e in &parts {
+        for (e, _, _) in &parts {
             commands.entity(e).despawn();
         }
-        *speeds = Speeds::default();
         commands.run_system_cached(spawn_parts);
     }
 }
@@ -594,7 +630,7 @@ fn hud(
     stickslip: Res<StickSlipRapier>,
     time: Res<Time<Virtual>>,
     theory: Res<Theory>,
-    speeds: Res<Speeds>,
+    parts: Query<(&Part, &Run)>,
     popov_base: Query<Has<StickSlipVibration>, With<PopovBase>>,
     mut text: Query<&mut Text, With<Hud>>,
 ) {
@@ -607,6 +643,12 @@ fn hud(
         (true, _) => "   [paused]",
         (false, true) => "   [slow motion x0.1]",
         _ => "",
+    };
+    let measured = |lane: usize| {
+        lane_speed(&parts, lane).map_or_else(
+            || format!("settling ({} s)", SETTLE[lane]),
+            |(v, n)| format!("{v:+.3} m/s ({n})"),
+        )
     };
     let (popov, feeder) = if on {
         (
@@ -622,19 +664,19 @@ fn hud(
     text.0 = format!(
         "stickslip: vibrating conveyor    t = {t:.2} s    vibration {vib}{state}\n\
          \n\
-         transport speed         measured    theory\n\
-         1  no vibration         {s0:+.3} m/s  0          (EP holds: no creep)\n\
-         2  Popov vibration      {s1:+.3} m/s  {popov}\n\
-         3  vibratory feeder     {s2:+.3} m/s  {feeder}\n\
+         transport speed         measured (parts)    theory\n\
+         1  no vibration         {s0:<19} 0          (EP holds: no creep)\n\
+         2  Popov vibration      {s1:<19} {popov}\n\
+         3  vibratory feeder     {s2:<19} {feeder}\n\
          \n\
          contacts  {st} sticking, {ss} stick-slip, {sl} sliding;  friction dissipates {pw:.2} W\n\
          parts     green sticking, orange stick-slip, red sliding, white in flight\n\
          keys      V vibration  Space pause  S slow motion  R reset  G gizmos",
         t = stickslip.modifier.time(),
         vib = if on { "ON" } else { "OFF" },
-        s0 = speeds.mean(0),
-        s1 = speeds.mean(1),
-        s2 = speeds.mean(2),
+        s0 = measured(0),
+        s1 = measured(1),
+        s2 = measured(2),
         st = totals.sticking,
         ss = totals.stick_slip,
         sl = totals.sliding,

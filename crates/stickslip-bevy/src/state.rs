@@ -70,10 +70,7 @@ impl StickSlipContacts {
     /// The most slippery regime among the contacts of the collider `entity` (sliding over
     /// stick-slip over sticking), or `None` without contacts: e.g. to colour a part.
     pub fn regime_of(&self, entity: Entity) -> Option<Regime> {
-        // The codes rank the regimes: sticking 0, stick-slip 1, sliding 2.
-        self.of(entity)
-            .map(|c| c.report.regime)
-            .max_by_key(|r| r.code())
+        Regime::most_slippery(self.of(entity).map(|c| c.report.regime))
     }
 }
 

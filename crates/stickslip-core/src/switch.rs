@@ -29,6 +29,22 @@ impl Regime {
             Regime::Sliding => "sliding",
         }
     }
+
+    /// The most slippery of `regimes` (sliding over stick-slip over sticking), or `None` if
+    /// there are none: a body's regime from its contacts'.
+    pub fn most_slippery(regimes: impl IntoIterator<Item = Regime>) -> Option<Regime> {
+        regimes.into_iter().max_by_key(|r| r.code())
+    }
+
+    /// The regime's colour in every viewer (bevy gizmos and materials, rerun), as sRGB bytes:
+    /// green sticking, orange stick-slip, red sliding, bright on a dark background.
+    pub fn srgb(self) -> [u8; 3] {
+        match self {
+            Regime::Sticking => [51, 217, 77],
+            Regime::StickSlip => [255, 153, 26],
+            Regime::Sliding => [242, 51, 51],
+        }
+    }
 }
 
 /// α(|μ|) for thresholds `mu_ba <= mu_max` (Eq. 5–7). With `mu_ba == mu_max` it is a step.
@@ -59,6 +75,21 @@ pub fn regime(mu_abs: f64, mu_ba: f64, mu_max: f64) -> Regime {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_most_slippery_regime_ranks_sliding_over_stick_slip_over_sticking() {
+        use Regime::*;
+        assert_eq!(Regime::most_slippery([]), None);
+        assert_eq!(Regime::most_slippery([Sticking, Sticking]), Some(Sticking));
+        assert_eq!(
+            Regime::most_slippery([Sticking, StickSlip, Sticking]),
+            Some(StickSlip)
+        );
+        assert_eq!(
+            Regime::most_slippery([StickSlip, Sliding, Sticking]),
+            Some(Sliding)
+        );
+    }
 
     #[test]
     fn alpha_matches_eq_5_to_7() {

@@ -19,7 +19,7 @@ use stickslip_rapier2d::core::law::{Law, Regime};
 use stickslip_rapier2d::core::sliding_curve::Curve;
 use stickslip_rapier2d::rapier::prelude::*;
 use stickslip_rapier2d::{FrictionMaterial, ReadBack, StickSlip};
-use stickslip_rerun::{SLIDING_COLOR, STICK_SLIP_COLOR, STICKING_COLOR, Sink};
+use stickslip_rerun::Sink;
 
 #[derive(Parser)]
 #[command(about = "Three parts on 2D ramps, plain rapier2d beside stickslip, in rerun")]
@@ -124,12 +124,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 .iter()
                 .find(|r| r.collider1 == lane.part || r.collider2 == lane.part)
                 .map(|r| r.regime);
-            let color = match regime {
-                None => GREY,
-                Some(Regime::Sticking) => STICKING_COLOR,
-                Some(Regime::StickSlip) => STICK_SLIP_COLOR,
-                Some(Regime::Sliding) => SLIDING_COLOR,
-            };
+            let color = regime.map_or(GREY, Regime::srgb);
             let body = &world.bodies[lane.body];
             let label = format!("{}: {}", lane.name, regime.map_or("Coulomb", |r| r.name()));
             rec.log(

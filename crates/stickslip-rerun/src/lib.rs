@@ -231,25 +231,15 @@ impl Default for LogOptions {
     }
 }
 
-/// Color of sticking contacts (green).
-pub const STICKING_COLOR: [u8; 3] = [44, 160, 44];
-/// Color of stick-slip contacts (orange).
-pub const STICK_SLIP_COLOR: [u8; 3] = [255, 127, 14];
-/// Color of sliding contacts (red).
-pub const SLIDING_COLOR: [u8; 3] = [214, 39, 40];
-
 /// Class id of a regime in the `world/contacts` annotation context: its code.
 pub fn regime_class(r: Regime) -> u16 {
     r.code() as u16
 }
 
+/// A regime's colour: `Regime::srgb`, as in the bevy add-ons' gizmos.
 fn regime_color(r: Regime) -> Color {
-    let c = match r {
-        Regime::Sticking => STICKING_COLOR,
-        Regime::StickSlip => STICK_SLIP_COLOR,
-        Regime::Sliding => SLIDING_COLOR,
-    };
-    Color::from_rgb(c[0], c[1], c[2])
+    let [red, green, blue] = r.srgb();
+    Color::from_rgb(red, green, blue)
 }
 
 const PALETTE: [[u8; 3]; 6] = [

@@ -15,20 +15,22 @@ pub const HZ: f64 = 60.0;
 pub const G: f64 = 9.81;
 
 /// An app with avian (and stickslip unless `plain`), `substeps` solver substeps and gravity
-/// tilted by `theta` about z (the floor stays level: a slope of angle θ).
+/// tilted by `theta` about z (the floor stays level: a slope of angle θ), at 60 Hz.
 pub fn app(stickslip: bool, substeps: u32, theta: f64) -> App {
+    app_at(stickslip, HZ, substeps, tilted_gravity(theta))
+}
+
+/// An app with avian (and stickslip unless `plain`) at `hz` ticks per second (one per
+/// update), `substeps` solver substeps and `gravity`.
+pub fn app_at(stickslip: bool, hz: f64, substeps: u32, gravity: Gravity) -> App {
     let mut app = App::new();
     app.add_plugins((MinimalPlugins, TransformPlugin, PhysicsPlugins::default()))
-        .insert_resource(Time::<Fixed>::from_hz(HZ))
+        .insert_resource(Time::<Fixed>::from_hz(hz))
         .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f64(
-            1.0 / HZ,
+            1.0 / hz,
         )))
         .insert_resource(SubstepCount(substeps))
-        .insert_resource(Gravity(Vec3::new(
-            (G * theta.sin()) as f32,
-            -(G * theta.cos()) as f32,
-            0.0,
-        )));
+        .insert_resource(gravity);
     if stickslip {
         app.add_plugins(StickSlipAvianPlugin::default());
     }
@@ -143,4 +145,31 @@ pub fn cuboid(app: &mut App, at: Vec3, size: Vec3, extra: impl Bundle) -> Entity
 /// The body's rotation.
 pub fn rotation(app: &App, e: Entity) -> Quat {
     app.world().get::<Rotation>(e).map_or(Quat::NAN, |r| r.0)
+}
+
+/// A sled of `mass` kg (1 m × 0.2 m × 1 m, rotation locked, never sleeping) on the floor,
+/// pressed onto it by a constant force of `press` N: with gravity off, its normal force.
+pub fn sled(app: &mut App, mass: f64, press: f64, extra: impl Bundle) -> Entity {
+    app.world_mut()
+        .spawn((
+            RigidBody::Dynamic,
+            Collider::cuboid(0.5, 0.1, 0.5),
+            Mass(mass as f32),
+            Transform::from_xyz(0.0, 0.05, 0.0),
+            LockedAxes::ROTATION_LOCKED,
+            SleepingDisabled,
+            ConstantForce(Vec3::new(0.0, -press as f32, 0.0)),
+            extra,
+        ))
+        .id()
+}
+
+/// One tick with the body's velocity along x set to `v` before it (its other components
+/// kept): the body is dragged at an imposed speed.
+pub fn drag_tick(app: &mut App, e: Entity, v: f64) {
+    let vy = velocity(app, e).y;
+    app.world_mut()
+        .entity_mut(e)
+        .insert(LinearVelocity(Vec3::new(v as f32, vy, 0.0)));
+    app.update();
 }
