@@ -230,9 +230,36 @@ pub(crate) fn apply(
             record.point = manifold.points.iter().map(|p| p.point).sum::<Vec3>() / points;
             record.normal = n;
             manifold.friction = record.state.limit;
+            if slip == [0.0, 0.0] {
+                start_inside_the_cone(manifold);
+            }
             // The law's target is one for v₂ − v₁: avian's sign is the other.
             manifold.tangent_velocity = drive - Vec3::from_array(basis.lift(out.target));
             store.stepped.insert((pair.contact_id.0, index), key);
+        }
+    }
+}
+
+/// Scales the manifold's warm-start friction impulses into the friction cone of the limit
+/// just written: their sum at most the limit times the points' warm-start normal impulses.
+/// avian re-clamps a contact's accumulated friction impulse only while the contact's tangent
+/// speed is not exactly zero (`tangent_part.rs` returns early otherwise): a warm start from a
+/// larger limit (the law's static limit before a vibration lowered it) that stops the contact
+/// exactly would hold it for ever, above the new limit. Only for contacts at exact rest (the
+/// solver clamps the others itself, with this tick's normal impulses); the points keep their
+/// shares (how the solver spread the friction over them).
+fn start_inside_the_cone(manifold: &mut ContactManifold) {
+    let (normal, tangent) = manifold.points.iter().fold((0.0, Vec2::ZERO), |(n, t), p| {
+        (
+            n + p.warm_start_normal_impulse.max(0.0),
+            t + p.warm_start_tangent_impulse,
+        )
+    });
+    let (most, length) = (manifold.friction * normal, tangent.length());
+    if length > most {
+        let scale = most / length;
+        for point in manifold.points.iter_mut() {
+            point.warm_start_tangent_impulse *= scale;
         }
     }
 }
