@@ -77,8 +77,9 @@ const PARTS: usize = 5;
 const SPACING: f32 = 0.2;
 const HALF: f32 = 0.04;
 /// Start-up transient of a part (s of simulated time) before its speed counts: the contact
-/// forms in a few ticks on troughs 1 and 2; on trough 3 the speed approaches Popov's v* as
-/// exp(−t/τ), τ ≈ 0.3 s here, and is within 1 % of it after 1.5 s.
+/// forms in a few ticks on troughs 1 and 2; on trough 3 the speed approaches Popov's v*
+/// within a second or two (`tests/conveyor.rs`: 0.13 % below it from 2 s on; this HUD at 4 s,
+/// counting from 1.5 s: 0.4 % below).
 const SETTLE: [f64; 3] = [0.2, 0.2, 1.5];
 
 fn main() -> AppExit {
