@@ -2,14 +2,15 @@
 # The bevy examples in a real window under Xvfb (software Vulkan). bevy_rapier apps with
 # stickslip (crate stickslip-bevy): `vibrating_conveyor` renders FRAMES frames and saves the
 # window to OUT; `view` opens scenarios/incline.toml the same way (saved beside OUT as
-# *_view.png); `elliptical_drive` likewise (*_drive.png). The avian app (crate stickslip-avian):
+# *_view.png); `bevy_elliptical_drive` likewise (*_drive.png). The avian app (crate stickslip-avian):
 # `avian_conveyor` after 120 frames (4 s: its vibrating trough's parts are past their start-up
 # transient), saved as *_avian.png. Each picture is checked not to be blank.
 #   bash scripts/bevy_screenshot.sh [OUT] [FRAMES]
 # Installs what it needs from Debian's packages (xvfb, Mesa's Vulkan driver) when missing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$HOME/.cache/stickslip-target}"
+# One package and feature selection for every cargo command (each dependency builds once).
+source scripts/cargo_selection.sh
 OUT="${1:-$CARGO_TARGET_DIR/vibrating_conveyor.png}"
 FRAMES="${2:-60}"
 
@@ -19,10 +20,10 @@ if ! command -v xvfb-run >/dev/null || [ ! -e /usr/share/vulkan/icd.d/lvp_icd.x8
         libxrandr2 libxi6 libxkbcommon-x11-0 >/dev/null
 fi
 
-# One invocation for both crates: bevy builds once, with the features of both.
-cargo build -p stickslip-bevy -p stickslip-avian \
-    --features stickslip-bevy/window,stickslip-bevy/scenario,stickslip-avian/window \
-    --example vibrating_conveyor --example view --example elliptical_drive --example avian_conveyor
+# In the test profile and the selection of scripts/test.sh, which has built them already.
+cargo build --workspace --profile test --features "$STICKSLIP_FEATURES" \
+    --example vibrating_conveyor --example view --example bevy_elliptical_drive \
+    --example avian_conveyor
 export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
 chmod 700 "$XDG_RUNTIME_DIR"
 VIEW_OUT="${OUT%.png}_view.png"
@@ -35,7 +36,7 @@ timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
     "$CARGO_TARGET_DIR/debug/examples/view" scenarios/incline.toml \
     --screenshot "$VIEW_OUT" --frames "$FRAMES"
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
-    "$CARGO_TARGET_DIR/debug/examples/elliptical_drive" --screenshot "$RAPIER_OUT" \
+    "$CARGO_TARGET_DIR/debug/examples/bevy_elliptical_drive" --screenshot "$RAPIER_OUT" \
     --frames "$FRAMES"
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
     "$CARGO_TARGET_DIR/debug/examples/avian_conveyor" --screenshot "$AVIAN_OUT" --frames 120

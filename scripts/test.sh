@@ -6,8 +6,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$HOME/.cache/stickslip-target}"
-export CARGO_TERM_COLOR="${CARGO_TERM_COLOR:-never}"
+# One package and feature selection for every cargo command (each dependency builds once).
+source scripts/cargo_selection.sh
 
 # The rerun CLI from PyPI `rerun-sdk` (its version must match the `rerun` crate, 0.36.3),
 # in a venv under ~/.cache/stickslip. STICKSLIP_RERUN_CLI is the path of its `rerun` binary:
@@ -27,17 +27,16 @@ install_rerun_cli() {
 }
 install_rerun_cli
 
-# The workspace includes stickslip-rapier-035 and stickslip-035: stickslip-rapier's sources and
-# the rapier test files (tests/rapier_*.rs, tests/ordinary_*.rs) built against rapier3d
-# 0.35.0-glamx0.2, the rapier bevy_rapier3d 0.36 pins, besides 0.36.1.
-cargo test --workspace
-# The bevy add-ons with their optional parts, headless: stickslip-bevy (bevy_rapier) with
-# contact gizmos (`debug`) and scenario files as bevy_rapier entities (`scenario`), and
-# stickslip-avian (avian3d) with its contact gizmos (`debug`); their tests and doc tests. One
-# invocation, so that one bevy build serves both (avian asks bevy_math for `approx`); the
-# windowed examples are built and run by scripts/bevy_screenshot.sh in .ci/run.
-cargo test -p stickslip-bevy -p stickslip-avian \
-    --features stickslip-bevy/debug,stickslip-bevy/scenario,stickslip-avian/debug
-cargo test -p stickslip --features parallel --test rapier_many_contacts --test rapier_popov --test rapier_snapshot --test rapier_drive --test shared_world --test rapier_recycling --test rapier_load_jump
-# The 2D adapter (rapier2d) with rapier's multi-threaded `parallel` feature as well.
-cargo test -p stickslip-rapier2d --features parallel --test snapshot --test shared_world --test stacks
+# Every test of the workspace, the bevy add-ons with their optional parts (contact gizmos,
+# scenario files as bevy_rapier entities; the windowed examples are built here and run by
+# scripts/bevy_screenshot.sh in .ci/run). The workspace includes stickslip-rapier-035 and
+# stickslip-035: stickslip-rapier's sources and the rapier test files (tests/rapier_*.rs,
+# tests/ordinary_*.rs) built against rapier3d 0.35.0-glamx0.2, the rapier bevy_rapier3d 0.36
+# pins, besides 0.36.1.
+cargo test --workspace --features "$STICKSLIP_FEATURES"
+# The rapier tests that exercise the hook on several threads, once more with rapier's
+# multi-threaded `parallel` feature, 3D (tests/) and 2D (crates/stickslip-rapier2d/tests/).
+cargo test --workspace --exclude stickslip-035 --features "$STICKSLIP_PARALLEL_FEATURES" \
+    --test rapier_many_contacts --test rapier_popov --test rapier_snapshot --test rapier_drive \
+    --test shared_world --test rapier_recycling --test rapier_load_jump \
+    --test rapier2d_snapshot --test rapier2d_shared_world --test rapier2d_stacks

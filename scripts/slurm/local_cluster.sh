@@ -14,13 +14,13 @@
 #    its merge job is cancelled and submit.sh -w says so.
 # 4. Stops the daemons it started (scontrol shutdown, munged by its pid), also on failure.
 #
-# STICKSLIP: the binary to use (default: `cargo build -p stickslip-cli --profile test`, which
-# reuses the test build of scripts/test.sh).
+# STICKSLIP: the binary to use (default: the CLI built in the test profile and the selection of
+# scripts/cargo_selection.sh, which reuses the build of scripts/test.sh).
 # KEEP=1 keeps the run directory (slurm.conf, logs, outputs) after a successful run.
 # Timings are printed; startup (munged to an idle node) took well under a second here.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$HOME/.cache/stickslip-target}"
+source scripts/cargo_selection.sh
 now() { date +%s.%N; }
 since() { awk -v a="$1" -v b="$(now)" 'BEGIN { printf "%.1f", b - a }'; }
 t_all=$(now)
@@ -35,7 +35,7 @@ if ! command -v slurmctld >/dev/null || ! command -v slurmd >/dev/null ||
 fi
 
 if [ -z "${STICKSLIP:-}" ]; then
-    cargo build -p stickslip-cli --profile test
+    cargo build --workspace --profile test --features "$STICKSLIP_FEATURES" --bin stickslip
     STICKSLIP="$CARGO_TARGET_DIR/debug/stickslip"
 fi
 STICKSLIP=$(realpath "$STICKSLIP")

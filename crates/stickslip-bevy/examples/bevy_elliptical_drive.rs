@@ -12,9 +12,9 @@
 //! Keys: F flip both ellipses (phase shift ↔ −phase shift), Space pause, R reset.
 //!
 //! ```sh
-//! cargo run --release -p stickslip-bevy --features window --example elliptical_drive
+//! cargo run --release -p stickslip-bevy --features window --example bevy_elliptical_drive
 //! xvfb-run -a -s "-screen 0 1280x720x24" cargo run -p stickslip-bevy --features window \
-//!     --example elliptical_drive -- --screenshot drive.png --frames 90
+//!     --example bevy_elliptical_drive -- --screenshot drive.png --frames 90
 //! ```
 
 use bevy::prelude::*;
@@ -85,7 +85,7 @@ fn main() -> AppExit {
             ("--screenshot", Some(p)) => shot = Some(p),
             ("--frames", Some(n)) if n.parse::<u32>().is_ok() => frames = n.parse().unwrap_or(90),
             _ => {
-                eprintln!("usage: elliptical_drive [--screenshot PATH] [--frames N]");
+                eprintln!("usage: bevy_elliptical_drive [--screenshot PATH] [--frames N]");
                 return AppExit::error();
             }
         }
