@@ -15,8 +15,9 @@
 #   --out     where to write the report (default: BENCHMARKS.md at the repository root)
 # Environment: CARGO_TARGET_DIR (default: target/), extra cargo flags in CARGO_FLAGS.
 #
-# CI smoke (compiles and runs every bench and every report measurement once, on tiny sizes):
-#   cargo test -p stickslip-benches --benches --bin bench_report
+# CI smoke (compiles and runs every bench and every report measurement once, on tiny sizes;
+# .ci/run passes the workspace selection of scripts/cargo_selection.sh):
+#   cargo test --workspace --bench step_cost --bin bench_report
 set -euo pipefail
 cd "$(dirname "$0")/.."
 

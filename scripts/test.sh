@@ -33,7 +33,8 @@ install_rerun_cli
 # stickslip-035: stickslip-rapier's sources and the rapier test files (tests/rapier_*.rs,
 # tests/ordinary_*.rs) built against rapier3d 0.35.0-glamx0.2, the rapier bevy_rapier3d 0.36
 # pins, besides 0.36.1.
-cargo test --workspace --features "$STICKSLIP_FEATURES"
+# (STICKSLIP_TIMINGS=--timings writes cargo's per-crate timing report; .ci/run sets it.)
+cargo test --workspace --features "$STICKSLIP_FEATURES" ${STICKSLIP_TIMINGS:-}
 # The rapier tests that exercise the hook on several threads, once more with rapier's
 # multi-threaded `parallel` feature, 3D (tests/) and 2D (crates/stickslip-rapier2d/tests/).
 cargo test --workspace --exclude stickslip-035 --features "$STICKSLIP_PARALLEL_FEATURES" \
