@@ -10,12 +10,15 @@
 //! Classes (the bench law of `benches/`: c = 1e4 /m, μ_ba 0.5, μ_max 0.55, flat curve 0.55,
 //! 10 N, 60 Hz, unless said):
 //! - `hold`: a loaded contact held at 0.6 of its capacity, no slip;
-//! - `slide`: a steady slide at 0.1 m/s;
-//! - `approach`: a slide at 0.1 m/s whose normal force changes by ±2 % every step (the
+//! - `slide`: a steady slide at 0.1 m/s (30 relaxation lengths m/c per step: the law's
+//!   exact α = 1 solution);
+//! - `creep`: a steady slide at 5 mm/s (1.5 relaxation lengths per step: the state stays
+//!   just below the band's top);
+//! - `approach`: the creep with a normal force that changes by ±2 % every step (the
 //!   state starts each step inside the band, below its top);
 //! - `enter`: break-away over and over: 8 steps held, then 8 steps slipping at 1 mm/s;
-//! - `reverse`: a slide at 0.05 m/s that reverses every 4 steps;
-//! - `turn`: a slide at 0.1 m/s whose direction turns by 30° every step;
+//! - `reverse`: a slide at 5 mm/s that reverses every 4 steps;
+//! - `turn`: a slide at 5 mm/s whose direction turns by 30° every step;
 //! - `turn_sharp`: the same with a sharp band (μ_ba = μ_max = 0.5, the scenes' default);
 //! - `vibrating`: a slide at 0.1 m/s on a source of normal vibration (ratio 0.5, 20 Hz,
 //!   time-resolved);
@@ -127,7 +130,7 @@ fn classes(n: usize) -> Vec<Class> {
     let along = |v: f64| move |_: usize| [v, 0.0];
     let turning = |k: usize| {
         let a = k as f64 * 30f64.to_radians();
-        [0.1 * a.cos(), 0.1 * a.sin()]
+        [5e-3 * a.cos(), 5e-3 * a.sin()]
     };
     let vib = VibrationSource::new(
         VibrationDirection::Normal,
@@ -159,10 +162,16 @@ fn classes(n: usize) -> Vec<Class> {
             record(&law, None, n, along(0.1), steady),
         ),
         class(
+            "creep",
+            &law,
+            None,
+            record(&law, None, n, along(5e-3), steady),
+        ),
+        class(
             "approach",
             &law,
             None,
-            record(&law, None, n, along(0.1), |k| {
+            record(&law, None, n, along(5e-3), |k| {
                 F_N * if k % 2 == 0 { 1.02 } else { 0.98 }
             }),
         ),
@@ -186,7 +195,7 @@ fn classes(n: usize) -> Vec<Class> {
                 &law,
                 None,
                 n,
-                |k| [if k % 8 < 4 { 0.05 } else { -0.05 }, 0.0],
+                |k| [if k % 8 < 4 { 5e-3 } else { -5e-3 }, 0.0],
                 steady,
             ),
         ),
