@@ -613,7 +613,7 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
         if settled || above || self.stays_sliding(mu, e, m, hi - flat_top(lo, hi)) {
             // α = 1 along the whole rest (the band only sinks as σ grows), or, from above
             // the band, up to where the state sinks to U: the linear ODE's exact solution
-            // μ(s) = m e + d exp(−c s/m), and its dissipation ∫|μ|²/m ds.
+            // (`slide_exactly`).
             let kappa = c / m;
             let d = sub(mu, scale(e, m));
             let used = if settled || !above || self.stays_sliding(mu, e, m, hi) {
@@ -626,11 +626,7 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
                 let lambda = ((disc - p) / dd).clamp(f64::MIN_POSITIVE, 1.0);
                 (-lambda.ln() / kappa).min(rest)
             };
-            let decay = (-kappa * used).exp();
-            let integral = m * m * used
-                + 2.0 * m * dot(e, d) * (1.0 - decay) / kappa
-                + dot(d, d) * (1.0 - decay * decay) / (2.0 * kappa);
-            let at = add(scale(e, m), scale(d, decay));
+            let (at, dissipated) = slide_exactly(mu, e, used, c, m);
             return Piece {
                 // Put onto U where the piece ends on it, so the next one starts in the band.
                 mu: if used < rest {
@@ -640,7 +636,7 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
                 },
                 sigma: self.grow(sigma, used, w_sigma),
                 used,
-                dissipated: (integral / m).max(0.0),
+                dissipated,
             };
         }
         // A state in a band that stays put, along the slip, below a sliding level at the
