@@ -1,9 +1,10 @@
 //! Stacks with stickslip attached to every collider (default configuration), beside plain
-//! rapier in the same test. Invariant: a pyramid of boxes, a brick wall and a crossed plank
-//! tower, upright and on a floor tilted to tan θ = 0.1 (μ 0.5, far below sliding), stand at
-//! least as still as under plain rapier — over 10 s after settling, no more bodies moved by
-//! more than 1 mm or 1 cm and no more mean downhill creep than plain rapier's (with a floor
-//! of 1 body and 0.1 mm for rounding) — for every law that sticks (EP, Phys, Coulomb; Regul creeps by design), and for EP with static above kinetic
+//! rapier in the same test. Invariant: a pyramid of boxes, a brick wall, a crossed plank
+//! tower and a 444-plank tower in the layout of rapier's `keva3` example, upright and on a
+//! floor tilted to tan θ = 0.1 (μ 0.5, far below sliding), stand at least as still as under
+//! plain rapier — over 10 s after settling, no more bodies moved by more than 1 mm or 1 cm
+//! (keva: 2 more at most) and no more mean creep than plain rapier's (with a floor of 1 body
+//! and 0.1 mm for rounding) — for every law that sticks (EP, Phys, Coulomb; Regul creeps by design), and for EP with static above kinetic
 //! friction (μ_ba 0.5, μ_k 0.3). A row of dominoes all falls, as in plain rapier; a box spun
 //! about the normal stops at the rate twist friction gives under plain rapier, within 5 %.
 
@@ -23,9 +24,19 @@ struct Stillness {
     creep: f64,
 }
 
+/// How long a stack settles before its stillness is measured (s): the keva tower rocks, under
+/// plain rapier too, until about 4.5 s (its planks' motion, per half second, falls to none by
+/// then), the smaller stacks within 2 s.
+fn settling(kind: Stack) -> f64 {
+    match kind {
+        Stack::Keva => 6.0,
+        _ => 2.0,
+    }
+}
+
 fn stillness(kind: Stack, size: usize, tan_theta: f64, friction: &Friction) -> Stillness {
     let mut run = Run::new(stack(kind, size, tan_theta, 0.5, DT), friction);
-    run.run_for(2.0);
+    run.run_for(settling(kind));
     let before = run.scene.positions();
     run.run_for(10.0);
     let after = run.scene.positions();
@@ -69,8 +80,13 @@ fn stands(kind: Stack, size: usize) {
                 s.over_1cm,
                 s.creep
             );
-            if s.over_1mm > plain.over_1mm.max(1)
-                || s.over_1cm > plain.over_1cm.max(1)
+            // Bodies that may move beyond plain rapier's count (rounding).
+            let allowed = |plain: usize| match kind {
+                Stack::Keva => plain + 2,
+                _ => plain.max(1),
+            };
+            if s.over_1mm > allowed(plain.over_1mm)
+                || s.over_1cm > allowed(plain.over_1cm)
                 || s.creep.abs() > plain.creep.abs().max(1e-4)
             {
                 failures.push(format!("{} at tan θ {tan_theta}: {s:?}", f.name()));
@@ -93,6 +109,11 @@ fn a_brick_wall_stands() {
 #[test]
 fn a_plank_tower_stands() {
     stands(Stack::Tower, 12);
+}
+
+#[test]
+fn a_keva_tower_stands() {
+    stands(Stack::Keva, 3);
 }
 
 #[test]

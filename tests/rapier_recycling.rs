@@ -5,7 +5,7 @@
 //! box with every contact hooked every step (rapier's `contact_recycling` off), for masses
 //! over four decades and two time steps — at μ_ba (EP, static above kinetic), holding without
 //! more than plain rapier (+ g_ba) after a jump to 0.6 μ_ba, moving as the hooked box after a jump to
-//! 0.9 μ_ba (both hold: `tests/rapier_load_jump.rs`), sliding at g (sin θ − μ_k cos θ) after a jump to 1.2 μ_ba. A world saved while
+//! 0.9 μ_ba, up to plain rapier's own difference between recycled and fresh contacts (both hold: `tests/rapier_load_jump.rs`), sliding at g (sin θ − μ_k cos θ) after a jump to 1.2 μ_ba. A world saved while
 //! contacts are recycled, and piles on a heightfield and on a compound ground (composite
 //! contact patches, recycled or not), resume bit for bit.
 
@@ -168,14 +168,22 @@ fn a_recycled_contact_holds_or_slides_after_a_jump_in_load_as_a_hooked_one() {
             // Closer to break-away a jump in one step makes rapier's first solve let the
             // contact slip (plain rapier too, ~0.2 mm, then it stops); stickslip then does
             // the same recycled or hooked.
+            // The law's steps are the same either way; what differs is rapier's own: a
+            // recycled pair keeps its contact points. So the two differ by no more than
+            // plain rapier recycled and not (+ 0.1 % of the slip for rounding).
             let (recycled, _) = after_a_jump(mass, dt, true, 0.9 * MU_BA);
             let (hooked, _) = after_a_jump(mass, dt, false, 0.9 * MU_BA);
+            let (plain_recycled, _) = jump(mass, dt, true, false, 0.9 * MU_BA);
+            let (plain_fresh, _) = jump(mass, dt, false, false, 0.9 * MU_BA);
+            let rapiers = (plain_recycled - plain_fresh).abs();
             println!(
-                "dt {dt:.4} mass {mass:6}: jump to 0.9 μ_ba moves {recycled:.3e} m recycled, {hooked:.3e} m hooked"
+                "dt {dt:.4} mass {mass:6}: jump to 0.9 μ_ba moves {recycled:.3e} m recycled, \
+                 {hooked:.3e} m hooked (plain rapier {plain_recycled:.3e} recycled, \
+                 {plain_fresh:.3e} not)"
             );
             assert!(
-                (recycled - hooked).abs() <= 1e-3 * hooked.abs().max(g_ba),
-                "recycled {recycled} vs hooked {hooked}"
+                (recycled - hooked).abs() <= rapiers + 1e-3 * hooked.abs().max(g_ba),
+                "recycled {recycled} vs hooked {hooked}, plain rapier's gap {rapiers}"
             );
             // Above: both slide at the kinetic acceleration.
             let tan: f64 = 1.2 * MU_BA;

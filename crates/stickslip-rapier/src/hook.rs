@@ -11,7 +11,6 @@ use crate::collider_map::ColliderMap;
 use crate::contact_store::{ContactKey, ContactRecord, ManifoldPart, is_composite};
 use crate::measure::{Measured, centroid, measure, point_velocity};
 use crate::modifier::StickSlip;
-use crate::quiet::QUIET_SHARE;
 #[cfg(rapier_035)]
 use crate::rapier_compat::RigidManifold;
 use crate::surface::surface_target;
@@ -19,7 +18,7 @@ use crate::warnings::Warning;
 use rapier::prelude::*;
 use std::sync::atomic::Ordering;
 use stickslip_core::contact::{ContactInput, step_contact};
-use stickslip_core::law::{Law, Regime};
+use stickslip_core::law::Law;
 
 /// The key of a manifold (see [`ManifoldPart`]): two convex shapes have one manifold; a
 /// composite shape one per sub-shape pair, or, when rapier clusters them for the solver, one
@@ -45,7 +44,7 @@ fn key(ctx: &ContactModificationContext, m: &ContactManifold, clustering: bool) 
     ContactKey { c1, c2, part }
 }
 
-fn inv_mass(bodies: &RigidBodySet, h: Option<RigidBodyHandle>) -> f64 {
+pub(crate) fn inv_mass(bodies: &RigidBodySet, h: Option<RigidBodyHandle>) -> f64 {
     h.and_then(|h| bodies.get(h))
         .filter(|b| b.is_dynamic())
         .map_or(0.0, |b| {
@@ -272,6 +271,7 @@ impl<H> StickSlip<H> {
             Some(last) => (*last, 1.0),
             None => (from_points, 1.0),
         };
+        let limit_before = rec.state.limit.to_bits();
         let out = step_contact(
             &mut rec.state,
             &ContactInput {
@@ -296,18 +296,13 @@ impl<H> StickSlip<H> {
                 c.tangent_velocity += v;
             }
         }
-        // Quiet (see `recycle`): the hook would write the same limit and no target again.
-        let quiet = out.holding
-            && rec.state.forming == 0
-            && rec.state.regime == Regime::Sticking.code()
-            && out.target == [0.0; 2]
-            && source.is_none()
-            && surface == Vector::ZERO
-            && law.can_stick()
-            && meas.normal_force > 0.0
-            && stickslip_core::vec2::norm(basis.project(crate::tangent::world(meas.mu)))
-                < QUIET_SHARE * out.limit;
-        if !quiet {
+        // A write that changed keeps the pair hooked without being tried for recycling
+        // after the step (see `recycle`): it will most likely change again.
+        let changed = rec.state.limit.to_bits() != limit_before
+            || out.target != [0.0; 2]
+            || source.is_some()
+            || surface != Vector::ZERO;
+        if changed {
             self.mark_active(bodies, ctx.colliders, c1, c2);
         }
     }

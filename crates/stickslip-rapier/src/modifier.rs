@@ -592,8 +592,13 @@ impl<H> StickSlip<H> {
             );
         }
         // A skipped step (dt 0) leaves the step count, and `end_step` everything else, as is.
-        self.clock.dt = if valid_dt(dt) { dt } else { 0.0 };
-        if valid_dt(dt) {
+        let dt = if valid_dt(dt) { dt } else { 0.0 };
+        if dt != self.clock.dt && dt > 0.0 {
+            // `end_step` did the recycled contacts' step with the last dt.
+            self.recycling.wake_all = true;
+        }
+        self.clock.dt = dt;
+        if dt > 0.0 {
             self.clock.step = self.clock.step.wrapping_add(1);
         }
         self.clock.clustering = params.contact_clustering;
@@ -623,8 +628,23 @@ impl<H> StickSlip<H> {
         }
         self.clock.time += dt;
         self.measure_patches(narrow_phase, dt);
-        self.settle_after_step(narrow_phase, bodies, colliders);
-        let colliders = &*colliders;
+        // Reports first: they tell the step just solved, and settling does the next step of
+        // the contacts it lets rapier recycle.
+        // Settling marks the records it reads as touched in this step, as the hook does.
+        let mark = self.clock.mark();
+        self.read_back_step(narrow_phase, bodies, colliders, dt);
+        self.settle_after_step(narrow_phase, bodies, colliders, mark);
+    }
+
+    /// The totals and reports of the step just solved (as [`Self::read_back`] asks), and the
+    /// sweep of records whose manifold rapier no longer holds.
+    fn read_back_step(
+        &mut self,
+        narrow_phase: &NarrowPhase,
+        bodies: &RigidBodySet,
+        colliders: &ColliderSet,
+        dt: f64,
+    ) {
         let read_back = self.read_back;
         let mark = self.clock.mark();
         if read_back == ReadBack::Off {

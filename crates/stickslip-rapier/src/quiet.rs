@@ -5,9 +5,6 @@
 use crate::collider_map::{AtomicColliderBits, ColliderBits, ColliderMap};
 use rapier::prelude::*;
 
-/// Share of the friction limit below which a held contact is quiet: the solver held it (the
-/// saturation margin of `stickslip_core::contact::step_contact`).
-pub(crate) const QUIET_SHARE: f64 = 1.0 - stickslip_core::contact::SATURATION;
 /// Share of the recycle window a quiet body may drift (translation, plus the rotation's chord
 /// at the collider's reach) before its contacts are hooked again.
 pub(crate) const DRIFT_SHARE: f32 = 0.25;

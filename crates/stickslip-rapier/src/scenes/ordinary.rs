@@ -182,6 +182,11 @@ pub enum Stack {
     Wall,
     /// A plank tower: `size` crossed layers of 4 planks (1.6 × 0.1 × 0.2 m).
     Tower,
+    /// A tower in the layout of rapier's `keva3` example: `size` blocks (at most 3) of planks
+    /// 0.1 × 0.5 × 2 m standing on edge, stacked from the widest, each block's layers crossed
+    /// (planks of one direction end to end, of the other spaced) and its top closed by planks
+    /// lying flat side by side. Three blocks: 444 planks, with faces that touch at zero gap.
+    Keva,
 }
 
 /// A [`Stack`] of `size` on a cuboid floor tilted to `tan_theta` (down +x), all friction `mu`,
@@ -237,12 +242,68 @@ pub fn stack(kind: Stack, size: usize, tan_theta: f64, mu: f32, dt: f64) -> Ordi
                 }
             }
         }
+        Stack::Keva => {
+            let half = Vector::new(0.05, 0.25, 1.0);
+            let mut base = 0.0;
+            // (planks across a layer, layers) of each block, widest first.
+            for (numx, numy) in [(3usize, 9usize), (2, 7), (1, 5)].into_iter().take(size) {
+                base = keva_block(&mut world, &mut add, half, base, numx, numy);
+            }
+        }
     }
     OrdinaryScene {
         world,
         ground: vec![ground],
         bodies,
     }
+}
+
+/// One block of [`Stack::Keva`] (rapier's `keva3` `build_block`), centred on the y axis with
+/// its bottom at `base`: returns the height of its top.
+fn keva_block(
+    world: &mut PhysicsWorld,
+    add: &mut impl FnMut(&mut PhysicsWorld, Vector, Vector),
+    half: Vector,
+    base: f32,
+    numx: usize,
+    numy: usize,
+) -> f32 {
+    let dims = [half, Vector::new(half.z, half.y, half.x)];
+    let width = 2.0 * half.z * numx as f32;
+    let numz = 3 * numx + 1;
+    let spacing = (half.z * numx as f32 - half.x) / (numz as f32 - 1.0);
+    let shift = Vector::new(-width / 2.0, base, -width / 2.0);
+    let (mut nx, mut nz) = (numx, numz);
+    for i in 0..numy {
+        std::mem::swap(&mut nx, &mut nz);
+        let dim = dims[i % 2];
+        let y = dim.y * i as f32 * 2.0;
+        for j in 0..nx {
+            let x = if i % 2 == 0 {
+                spacing * j as f32 * 2.0
+            } else {
+                dim.x * j as f32 * 2.0
+            };
+            for k in 0..nz {
+                let z = if i % 2 == 0 {
+                    dim.z * k as f32 * 2.0
+                } else {
+                    spacing * k as f32 * 2.0
+                };
+                add(world, Vector::new(x, y, z) + dim + shift, dim);
+            }
+        }
+    }
+    // The top, closed by planks lying flat.
+    let height = 2.0 * half.y * numy as f32;
+    let dim = Vector::new(half.z, half.x, half.y);
+    for i in 0..(width / (2.0 * dim.x)) as usize {
+        for j in 0..(width / (2.0 * dim.z)) as usize {
+            let at = Vector::new(2.0 * dim.x * i as f32, height, 2.0 * dim.z * j as f32);
+            add(world, at + dim + shift, dim);
+        }
+    }
+    base + height + 2.0 * dim.y
 }
 
 /// A box (2 × 0.2 × 2 m, mass `box_mass`) on level ground, carrying `balls` balls of radius
