@@ -4,10 +4,14 @@
 //! under a load that then rises slowly, or jumps, it breaks away at the same load as the same
 //! box with every contact hooked every step (rapier's `contact_recycling` off), for masses
 //! over four decades and two time steps — at μ_ba (EP, static above kinetic), holding without
-//! more than plain rapier (+ g_ba) after a jump to 0.6 μ_ba, moving as the hooked box after a jump to
-//! 0.9 μ_ba, up to plain rapier's own difference between recycled and fresh contacts (both hold: `tests/rapier_load_jump.rs`), sliding at g (sin θ − μ_k cos θ) after a jump to 1.2 μ_ba. A world saved while
-//! contacts are recycled, and piles on a heightfield and on a compound ground (composite
-//! contact patches, recycled or not), resume bit for bit.
+//! more than plain rapier (+ g_ba) after a jump to 0.6 μ_ba, moving as the hooked box after a
+//! jump to 0.9 μ_ba up to plain rapier's own difference between recycled and fresh contacts
+//! (both hold: `tests/rapier_load_jump.rs`), sliding at g (sin θ − μ_k cos θ) after a jump to
+//! 1.2 μ_ba. The same box carried at 0.5 m/s by a kinematic platform (a pair that moves,
+//! recycled because rapier's own full update writes the same μ) is recycled while it holds and
+//! breaks away at μ_ba, where the hooked one does. A world saved while contacts are recycled,
+//! and piles on a heightfield and on a compound ground (composite contact patches, recycled or
+//! not), resume bit for bit.
 
 use rapier3d::prelude::*;
 use stickslip::core::law::Law;
@@ -105,6 +109,81 @@ fn a_recycled_contact_breaks_away_under_a_rising_load_where_a_hooked_one_does() 
             assert_eq!(none, 0.0, "nothing recycles with contact_recycling off");
             // Break-away at μ_ba (the tangent grows by rate·dt per step; the box needs a few
             // steps to pass 1 cm/s) and at the same load either way.
+            for at in [recycled_at, hooked_at] {
+                assert!((at - MU_BA).abs() < 0.01, "break-away at tan {at}");
+            }
+            assert!(
+                (recycled_at - hooked_at).abs() < 2.0 * 0.05 * dt + 1e-9,
+                "recycled {recycled_at} vs hooked {hooked_at}"
+            );
+        }
+    }
+}
+
+/// A box of `mass` carried at 0.5 m/s along z by a kinematic platform (so it moves 2–8 mm a
+/// step, far more than a resting body), both attached: the slope's tangent at which the box
+/// starts sliding on the platform (downhill speed above 1 cm/s) while the tangent rises by
+/// `rate` per second from 0.3, and the share of the hold before 0.35 in which the box's
+/// contacts were recycled.
+fn break_away_on_a_moving_platform(mass: f32, dt: f64, recycling: bool, rate: f64) -> (f64, f64) {
+    let mut world = PhysicsWorld::default();
+    world.integration_parameters.dt = dt as f32;
+    world.integration_parameters.contact_recycling = recycling;
+    let v = Vector::new(0.0, 0.0, 0.5);
+    let platform = world.insert_body(RigidBodyBuilder::kinematic_velocity_based().linvel(v));
+    let under = world.insert_collider(
+        ColliderBuilder::cuboid(5.0, 0.1, 200.0)
+            .translation(Vector::new(0.0, -0.1, 0.0))
+            .friction(MU_BA as f32),
+        Some(platform),
+    );
+    let (b, on) = world.insert(
+        RigidBodyBuilder::dynamic()
+            .translation(Vector::new(0.0, 0.25, 0.0))
+            .linvel(v)
+            .can_sleep(false),
+        ColliderBuilder::cuboid(0.25, 0.25, 0.25)
+            .density(mass / 0.125)
+            .friction(MU_BA as f32),
+    );
+    let mut m = StickSlip::new(FrictionMaterial::new(ep()));
+    for h in [under, on] {
+        m.attach(&mut world.colliders, h, None);
+    }
+    set_slope(&mut world, 0.0);
+    for _ in 0..(0.5 / dt) as usize {
+        m.step(&mut world);
+    }
+    let (mut recycled, mut held) = (0usize, 0usize);
+    let mut tan = 0.3;
+    while tan < 0.8 {
+        set_slope(&mut world, tan);
+        m.step(&mut world);
+        if tan < 0.35 {
+            held += 1;
+            recycled += usize::from(m.is_recycled(on));
+        }
+        if world.bodies[b].linvel().x > 0.01 {
+            return (tan, recycled as f64 / held as f64);
+        }
+        tan += rate * dt;
+    }
+    panic!("no break-away below tan 0.8 (mass {mass}, dt {dt})");
+}
+
+#[test]
+fn a_carried_contact_recycles_and_breaks_away_where_a_hooked_one_does() {
+    for dt in [1.0 / 60.0, 1.0 / 240.0] {
+        for mass in [0.1f32, 10.0, 1000.0] {
+            let (recycled_at, share) = break_away_on_a_moving_platform(mass, dt, true, 0.05);
+            let (hooked_at, none) = break_away_on_a_moving_platform(mass, dt, false, 0.05);
+            println!(
+                "dt {dt:.4} mass {mass:6}: carried box breaks away at tan {recycled_at:.4} \
+                 recycled ({:.0} % of the hold recycled), {hooked_at:.4} hooked",
+                100.0 * share
+            );
+            assert!(share > 0.9, "the carried contact was recycled {share}");
+            assert_eq!(none, 0.0, "nothing recycles with contact_recycling off");
             for at in [recycled_at, hooked_at] {
                 assert!((at - MU_BA).abs() < 0.01, "break-away at tan {at}");
             }
@@ -276,6 +355,39 @@ fn a_snapshot_taken_while_contacts_recycle_resumes_bit_identically() {
     }
     // After the snapshot the floor tilts past break-away: recycled contacts are hooked again
     // in both runs, and the stacks slide.
+    let recycled = resumes_bit_identically(world, m, 120, 240, 60, |w| set_slope(w, 0.7));
+    assert!(recycled >= 60, "only {recycled} colliders recycled");
+}
+
+#[test]
+fn a_snapshot_taken_while_carried_contacts_recycle_resumes_bit_identically() {
+    let mut world = PhysicsWorld::default();
+    let v = Vector::new(0.0, 0.0, 0.5);
+    let platform = world.insert_body(RigidBodyBuilder::kinematic_velocity_based().linvel(v));
+    world.insert_collider(
+        ColliderBuilder::cuboid(10.0, 0.5, 200.0).friction(MU_BA as f32),
+        Some(platform),
+    );
+    for i in 0..36 {
+        let (x, z) = ((i % 6) as f32 - 2.5, (i / 6) as f32 - 2.5);
+        for level in 0..2 {
+            world.insert(
+                RigidBodyBuilder::dynamic()
+                    .translation(Vector::new(1.2 * x, 0.76 + 0.5 * level as f32, 1.2 * z))
+                    .linvel(v)
+                    .can_sleep(false),
+                ColliderBuilder::cuboid(0.25, 0.25, 0.25)
+                    .density(500.0)
+                    .friction(MU_BA as f32),
+            );
+        }
+    }
+    let mut m = StickSlip::new(FrictionMaterial::new(ep()));
+    let all: Vec<_> = world.colliders.iter().map(|(h, _)| h).collect();
+    for h in all {
+        m.attach(&mut world.colliders, h, None);
+    }
+    // Saved while the stacks ride, then tilted past break-away.
     let recycled = resumes_bit_identically(world, m, 120, 240, 60, |w| set_slope(w, 0.7));
     assert!(recycled >= 60, "only {recycled} colliders recycled");
 }

@@ -187,6 +187,7 @@ fn scenes(mode: Mode) -> Vec<(Scene, &'static [Variant])> {
         (Scene::Compounds { bodies: 256 }, SCALING),
         (Scene::Platforms { boxes: 216 }, SCALING),
         (Scene::Dominoes { count: 1000 }, SCALING),
+        (Scene::Keva, SCALING),
     ];
     if mode == Mode::Full {
         v.push((Scene::plane_for_points(100_000), SCALING));

@@ -18,6 +18,7 @@ pub fn build(
         Scene::Compounds { bodies } => compounds(world, hooked, bodies),
         Scene::Platforms { boxes } => platforms(world, hooked, drivers, boxes),
         Scene::Dominoes { count } => dominoes(world, hooked, count),
+        Scene::Keva => keva(world, hooked),
         _ => unreachable!("not a scene after rapier's examples: {scene:?}"),
     }
 }
@@ -244,4 +245,13 @@ fn dominoes(
         );
     }
     ground
+}
+
+/// The tower of `scenes::ordinary::stack(Stack::Keva, 3, ..)` on level ground: 444 planks.
+fn keva(world: &mut PhysicsWorld, hooked: &mut Vec<ColliderHandle>) -> ColliderHandle {
+    use stickslip::rapier::scenes::ordinary::{Stack, stack};
+    let scene = stack(Stack::Keva, 3, 0.0, MU, 1.0 / 60.0);
+    *world = scene.world;
+    hooked.extend(world.colliders.iter().map(|(h, _)| h));
+    scene.ground[0]
 }

@@ -25,7 +25,10 @@
 //! - `compounds_<n>`: n U-shaped compound bodies (three cuboids) dropped in a heap;
 //! - `platforms_<n>`: n boxes in 4-high stacks on six position-based kinematic platforms
 //!   swinging 1 m at 0.2 Hz (peak acceleration 1.6 m/s², below μg: the stacks ride along);
-//! - `dominoes_<n>`: n dominoes in rows of 100, the first of each row pushed.
+//! - `dominoes_<n>`: n dominoes in rows of 100, the first of each row pushed;
+//! - `keva_444`: a tower in the layout of rapier's `keva3` (three blocks, 444 planks of
+//!   0.1 × 0.5 × 2 m, crossed layers, faces touching at zero gap), sleeping off so it stays
+//!   active, measured after 6 s of settling.
 //!
 //! All at dt = 1/60 s.
 #![allow(dead_code)]
@@ -72,6 +75,9 @@ pub enum Scene {
     Platforms { boxes: usize },
     /// `count` dominoes in rows of 100, the first of each row pushed.
     Dominoes { count: usize },
+    /// The 444-plank tower of `scenes::ordinary::stack(Stack::Keva, 3, ..)` (rapier's `keva3`
+    /// layout, three blocks).
+    Keva,
 }
 
 impl Scene {
@@ -96,6 +102,7 @@ impl Scene {
             Scene::Compounds { bodies } => format!("compounds_{bodies}"),
             Scene::Platforms { boxes } => format!("platforms_{boxes}"),
             Scene::Dominoes { count } => format!("dominoes_{count}"),
+            Scene::Keva => "keva_444".to_string(),
         }
     }
 
@@ -132,6 +139,9 @@ impl Scene {
             ),
             Scene::Dominoes { count } => {
                 format!("{count} dominoes in rows of 100 toppling, dt 1/60 s")
+            }
+            Scene::Keva => {
+                "a 444-plank tower in rapier's keva3 layout, at rest, dt 1/60 s".to_string()
             }
         }
     }
@@ -175,6 +185,8 @@ impl Scene {
             // dominoes fall.
             Scene::Drum { .. } | Scene::Heightfield { .. } | Scene::Compounds { .. } => 90,
             Scene::Platforms { .. } | Scene::Dominoes { .. } => 60,
+            // The tower rocks, under plain rapier too, until about 4.5 s.
+            Scene::Keva => 360,
         }
     }
 }
@@ -511,7 +523,8 @@ impl Bench {
             | Scene::Heightfield { .. }
             | Scene::Compounds { .. }
             | Scene::Platforms { .. }
-            | Scene::Dominoes { .. } => {
+            | Scene::Dominoes { .. }
+            | Scene::Keva => {
                 vib_host = examples::build(scene, &mut world, &mut hooked, &mut drivers);
             }
         }

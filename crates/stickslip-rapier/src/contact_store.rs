@@ -84,6 +84,9 @@ pub(crate) struct ContactRecord {
     pub state: ContactState,
     /// The wrapped user hook's own `user_data` for this manifold (we own the field).
     pub inner_user_data: u32,
+    /// The record holds the hook's next step already: `end_step` did it for a manifold it
+    /// let rapier recycle (see `recycle`).
+    pub ahead: bool,
     /// rapier 0.35 only: the warm-start impulse the manifold's points carried into the last
     /// solve (summed), which 0.35 leaves in the impulse it reports (see `rapier_compat`).
     #[cfg(rapier_035)]
@@ -100,7 +103,9 @@ pub(crate) fn from_bf16(x: u16) -> f32 {
     f32::from_bits((x as u32) << 16)
 }
 
-// The metadata word of a slot (bit 0 unused: it was the hand-written lock's).
+// The metadata word of a slot.
+/// `ContactRecord::ahead`.
+const AHEAD: u16 = 1;
 const LIVE: u16 = 1 << 1;
 /// Parity of the step that last touched the record (the sweep runs every step).
 const TOUCHED: u16 = 1 << 2;
@@ -201,6 +206,7 @@ fn unpack(p: &Packed, slip: u16, meta: u16) -> ContactRecord {
             forming: u8::from(meta & FORMING != 0) | u8::from(slip & SLIP_FORMING != 0) << 1,
         },
         inner_user_data: 0,
+        ahead: meta & AHEAD != 0,
         #[cfg(rapier_035)]
         warm_start_impulse: p.warm_start_impulse,
     }
@@ -226,7 +232,8 @@ fn pack(record: &ContactRecord, c1: u32, c2: u32) -> (Packed, u16) {
 fn with_state(meta: u16, record: &ContactRecord) -> u16 {
     let r = &record.state;
     let forming = if r.forming & 1 != 0 { FORMING } else { 0 };
-    (meta & !(REGIME_MASK | FORMING)) | pack_regime(r.regime) | forming
+    let ahead = if record.ahead { AHEAD } else { 0 };
+    (meta & !(REGIME_MASK | FORMING | AHEAD)) | pack_regime(r.regime) | forming | ahead
 }
 
 /// Whether slot data `d` is a live record of the pair `(c1, c2)` (of `generation`, if given).
@@ -462,6 +469,15 @@ impl ContactStore {
         lock(&self.inner_data).remove(&index);
         *user_data = encode(index, generation);
         (index, true)
+    }
+
+    /// Marks no record as holding the hook's next step (see `ContactRecord::ahead`): a mark
+    /// holds for the one step after the `end_step` that set it.
+    pub fn clear_ahead(&mut self) {
+        let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
+        for slot in slots.iter_mut() {
+            *slot.meta_mut() &= !AHEAD;
+        }
     }
 
     /// Drops every record not touched at `step`, cuts free slots off the end and gives back
@@ -783,13 +799,14 @@ mod tests {
             ..ContactRecord::default()
         };
         for regime in [0, 1, 2, u8::MAX, REGIME_RESET] {
-            for forming in 0..=2 {
+            for (forming, ahead) in [(0, false), (1, true), (2, false), (2, true)] {
                 let rec = ContactRecord {
                     state: ContactState {
                         regime,
                         forming,
                         ..rec.state
                     },
+                    ahead,
                     ..rec
                 };
                 let (p, slip) = pack(&rec, 3, 4);

@@ -178,6 +178,7 @@ impl<H> StickSlip<H> {
         inner.modify_solver_contacts(ctx);
         let inner_after = ctx.rigid().map_or(inner_before, |r| *r.user_data);
         let step = self.clock.mark();
+        let (c1, c2) = (ctx.collider1, ctx.collider2);
         self.store
             .with_record(&mut user_data, &key, step, |rec, _, ours| {
                 rec.inner_user_data = inner_after;
@@ -185,11 +186,20 @@ impl<H> StickSlip<H> {
                     *r.user_data = ours;
                 }
                 let patch = matches!(key.part, ManifoldPart::Cluster(_));
-                self.apply(
-                    ctx,
-                    rec,
-                    patch.then(|| self.patches_measured.get(&ours)).flatten(),
-                );
+                let woken = |h| self.recycling.next.contains(h);
+                if std::mem::take(&mut rec.ahead) && !(woken(c1) || woken(c2)) {
+                    // `end_step` did this step (the pair was to be recycled and a later pair
+                    // hooked one of its colliders again): the solver gets what it found.
+                    if let Some(m) = ctx.rigid_mut() {
+                        *m.friction = rec.state.limit;
+                    }
+                } else {
+                    self.apply(
+                        ctx,
+                        rec,
+                        patch.then(|| self.patches_measured.get(&ours)).flatten(),
+                    );
+                }
                 if patch {
                     // A dynamic side first: the narrow phase finds a pair by walking the
                     // first collider's pairs, and a composite ground or drum has hundreds.

@@ -35,6 +35,8 @@ pub(crate) struct Recycling {
     /// Scratch: candidates to go quiet that moved more than [`MOTION_SHARE`] of the window in
     /// the step, found once per step instead of once per pair.
     pub moving: ColliderBits,
+    /// Scratch: colliders with a touching pair found quiet in the step.
+    pub carried: ColliderBits,
 }
 
 impl Recycling {

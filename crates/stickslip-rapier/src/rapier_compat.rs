@@ -68,6 +68,33 @@ pub(crate) fn recycle_window(params: &rapier::prelude::IntegrationParameters) ->
     }
 }
 
+/// The friction coefficient rapier gives a pair of colliders on a full contact update:
+/// their coefficients by the combine rule that wins (`CoefficientCombineRule::combine`, which
+/// 0.35 keeps private: there, the same code).
+pub(crate) fn combined_friction(
+    a: &rapier::prelude::Collider,
+    b: &rapier::prelude::Collider,
+) -> f32 {
+    use rapier::prelude::CoefficientCombineRule as Rule;
+    let (c1, c2) = (a.friction(), b.friction());
+    let (r1, r2) = (a.friction_combine_rule(), b.friction_combine_rule());
+    #[cfg(not(rapier_035))]
+    {
+        Rule::combine(c1, c2, r1, r2)
+    }
+    #[cfg(rapier_035)]
+    {
+        match r1.max(r2) {
+            Rule::Average => (c1 + c2) / 2.0,
+            Rule::Min => c1.min(c2).abs(),
+            Rule::Multiply => c1 * c2,
+            Rule::Max => c1.max(c2),
+            Rule::ClampedSum => (c1 + c2).clamp(0.0, 1.0),
+            Rule::GeometricMean => (c1.max(0.0) * c2.max(0.0)).sqrt(),
+        }
+    }
+}
+
 #[cfg(rapier_035)]
 pub(crate) use v035::RigidManifold;
 

@@ -18,13 +18,27 @@
 //! have none). After each step [`StickSlip::end_step`] does that next step on a copy of
 //! every record of a pair that could be recycled, with the inputs the hook would read (this
 //! solve's normal force and friction, the slip of the touching points at the velocities
-//! after it, the next step's clock); once every pair is decided, it does it for real on the
-//! records of the pairs that will be recycled (after the reports, which tell the step just
-//! solved). A recycled manifold keeps what the hook last wrote, and the solver reads it every
-//! step: the solve is the one a hooked step would have made, and the record moves on exactly
-//! as the hook would have moved it (held force, mean normal force, warm start). The one
-//! difference is rapier's own: a recycled pair keeps its contact points instead of re-picking
-//! them, as in plain rapier.
+//! after it, the next step's clock), and keeps that step in the records of the pairs it lets
+//! rapier recycle (after the reports, which tell the step just solved), marked as done: if a
+//! later pair hooks one of the colliders again, the hook writes what that step found instead
+//! of stepping twice (unless the collider was hooked again before the step, for something
+//! the user changed: then the hook steps with what changed). A recycled manifold keeps what
+//! the hook last wrote, and the solver reads it every step: the solve is the one a hooked step
+//! would have made, and the record moves on exactly as the hook would have moved it (held
+//! force, mean normal force, warm start). The one difference is rapier's own: a recycled pair
+//! keeps its contact points instead of re-picking them, as in plain rapier.
+//!
+//! ## Pairs that move
+//! rapier updates a recycled pair in full, without the hook, once its relative pose drifts
+//! out of the recycle window or either collider turns by ~11.5° (rapier's rule). A pair whose
+//! colliders barely move (at most [`MOTION_SHARE`] of the window a step) is hooked again
+//! before that can happen (below). A pair with a collider that moves more — a box carried on
+//! a platform, a stack in a turning drum, a ball rolling without slipping — may be recycled
+//! too, when rapier's own full update would write what the hook writes: the pair's combined
+//! friction coefficient (its colliders' coefficients by their combine rules) has the bits of
+//! the law's limit, as for an elasto-plastic contact holding at μ_ba on colliders whose
+//! friction is μ_ba. Its collider *rides*: rapier updates its pairs when it decides to, and
+//! no drift of its own hooks it again.
 //!
 //! So a contact holding inside its limit is quiet (EP and Phys write their capacity, Coulomb
 //! its μ), and so is an elasto-plastic contact with no load whose faces rest against each
@@ -46,31 +60,36 @@
 //! - carries a manifold the hook did not write, with another limit than the law's (rapier
 //!   ran a full update without the hook: a new contact patch, a collider the user changed);
 //! - has nothing touching yet and a counterpart that moves (a contact may form);
+//! - moves (a collider that rides, see above) and its combined friction differs from the
+//!   law's limit;
 //!
-//! or when its body moves more than [`MOTION_SHARE`] of the recycle window in a step, or has
-//! drifted (plus the coming step's motion) [`DRIFT_SHARE`] of it since the flag went off
+//! or, for a collider that does not ride, when its body has drifted (plus the coming step's
+//! motion) [`DRIFT_SHARE`] of the window since the flag went off
 //! (checked in [`StickSlip::begin_step`], after any teleport or velocity the user set) —
 //! rapier would otherwise run a full update on its own once the pair drifts out of the window
 //! (the window is the prediction distance, or the recycle distance if smaller). A velocity
-//! the user gives an *unattached* counterpart between steps is seen after the step; that step
-//! holds as a hooked contact would (the hook's hold reads the last solve, not the velocity).
+//! the user gives a collider that rides, or an *unattached* counterpart, between steps is
+//! seen after the step; that step holds as a hooked contact would (the hook's hold reads the
+//! last solve, not the velocity); a speed the kernel takes for garbage hooks it at once.
 //! Or when the user changes the collider's material, a pair material, a vibration source or
 //! the tuning, or attaches it again (also in `begin_step`); the hook then steps the record
 //! `end_step` moved on, with what changed. A hooked manifold whose write changed marks its
 //! colliders (those of moving bodies when there are any, so one sliding box does not hook a
-//! whole ground), and so does a pair found not quiet after the step. Sleeping pairs are left as they are: rapier does not update them.
+//! whole ground), and so does a pair found not quiet after the step. Sleeping pairs are left
+//! as they are: rapier does not update them.
 //!
 //! With `contact_recycling` off, or a pause (dt = 0), every flag stays on.
 
 use crate::collider_map::{ColliderBits, ColliderMap};
-use crate::contact_store::ContactRecord;
 use crate::contact_store::is_composite;
+use crate::contact_store::{ContactRecord, ContactStore};
 use crate::hook::inv_mass;
 use crate::measure::{Measured, measure, point_velocity, world_centroid};
 use crate::modifier::StickSlip;
 use crate::quiet::{DRIFT_SHARE, MOTION_SHARE, QuietPose};
 use rapier::prelude::*;
-use stickslip_core::contact::{ContactInput, step_contact};
+use std::collections::HashMap;
+use stickslip_core::contact::{ContactInput, MAX_SANE_SPEED, slip_matters, step_contact};
 use stickslip_core::law::Regime;
 
 /// The pose the drift of `collider` is measured on (its body's, or its own without one) and
@@ -166,6 +185,67 @@ fn unloaded_at_rest(law: &stickslip_core::law::Law, relative: Vector, dt: f64) -
         .is_some_and(|c| (relative.length() as f64) * dt <= law.static_coefficient() / c)
 }
 
+/// Stores `rec`, which holds the hook's next step, as its manifold's record (`at`: its
+/// `user_data`, pair and the step's mark), and a composite patch's measurement for the next
+/// hooked step.
+fn commit_ahead(
+    store: &mut ContactStore,
+    patches: Option<&mut HashMap<u32, Measured>>,
+    (user_data, c1, c2, mark): (u32, ColliderHandle, ColliderHandle, u32),
+    mut rec: ContactRecord,
+    meas: Option<Measured>,
+) {
+    rec.ahead = true;
+    store.update(user_data, c1, c2, mark, |r| *r = rec);
+    if let (Some(patches), Some(meas)) = (patches, meas) {
+        patches.insert(user_data, meas);
+    }
+}
+
+/// The bits of the friction coefficient rapier writes on the pair's manifolds when it
+/// updates them in full without the hook (its colliders' coefficients by their combine
+/// rules), if both colliders exist.
+fn rapiers_own(colliders: &ColliderSet, c1: ColliderHandle, c2: ColliderHandle) -> Option<u32> {
+    let (a, b) = (colliders.get(c1)?, colliders.get(c2)?);
+    Some(crate::rapier_compat::combined_friction(a, b).to_bits())
+}
+
+/// How far the points of `c2` can move against `c1` in one step (m): the velocity of `c2`'s
+/// centre of mass in `c1`'s moving frame, plus the turn between them at `c2`'s reach. Bodies
+/// carried together (stacks on a platform, in a turning drum) barely move against each other.
+fn relative_motion(
+    bodies: &RigidBodySet,
+    colliders: &ColliderSet,
+    c1: ColliderHandle,
+    c2: ColliderHandle,
+    dt: f32,
+) -> f32 {
+    let frame = |h: ColliderHandle| {
+        let c = colliders.get(h)?;
+        let body = c.parent().and_then(|b| bodies.get(b));
+        let (v, w, centre) = match body {
+            Some(b) if !b.is_fixed() && !b.is_sleeping() => {
+                (b.linvel(), b.angvel(), b.center_of_mass())
+            }
+            _ => (Vector::ZERO, AngVector::default(), c.position().translation),
+        };
+        Some((v, w, centre, anchor(bodies, c).1))
+    };
+    let (Some((v1, w1, o1)), Some((v2, w2, o2, reach2))) =
+        (frame(c1).map(|(v, w, o, _)| (v, w, o)), frame(c2))
+    else {
+        return f32::INFINITY;
+    };
+    #[cfg(not(dim2))]
+    let (carried, turn) = (v1 + w1.cross(o2 - o1), (w2 - w1).length());
+    #[cfg(dim2)]
+    let (carried, turn) = {
+        let r = o2 - o1;
+        (v1 + Vector::new(-w1 * r.y, w1 * r.x), (w2 - w1).abs())
+    };
+    ((v2 - carried).length() + turn * reach2) * dt
+}
+
 /// Whether the collider's body is fixed (or it has none), or, with `or_asleep`, asleep.
 fn is_still(
     bodies: &RigidBodySet,
@@ -232,13 +312,8 @@ impl<H> StickSlip<H> {
         rec: &mut ContactRecord,
     ) -> (bool, Option<Measured>) {
         let dt = self.clock.dt;
-        let Some((p, surface)) = world_centroid(m, colliders, pair) else {
-            return (false, None);
-        };
         let (rb1, rb2) = (m.data.rigid_body1, m.data.rigid_body2);
         let basis = crate::tangent::basis(m.data.normal);
-        let relative = point_velocity(bodies, rb2, p) - point_velocity(bodies, rb1, p) - surface;
-        let slip = basis.project(crate::tangent::world(relative));
         let meas = measure(
             m,
             &m.data.solver_contacts,
@@ -246,38 +321,57 @@ impl<H> StickSlip<H> {
             crate::rapier_compat::warm_before(rec),
         );
         crate::rapier_compat::remember_warm_start(rec, meas.warm_start_impulse);
-        let (out, at_rest) =
-            self.laws
-                .with_pair_law(&self.attached, colliders, pair, &self.warned, |law| {
-                    let out = step_contact(
-                        &mut rec.state,
-                        &ContactInput {
-                            law,
-                            source: None,
-                            rel: 1.0,
-                            basis: &basis,
-                            normal_force: meas.normal_force,
-                            measured_mu: basis.project(crate::tangent::world(meas.mu)),
-                            slip,
-                            dt,
-                            time: self.clock.time,
-                            inv_mass: inv_mass(bodies, rb1) + inv_mass(bodies, rb2),
-                            stiffness_time: self.config.stiffness_time,
-                            warm_start: 1.0,
-                        },
-                    );
-                    (out, unloaded_at_rest(law, relative, dt))
-                });
+        let measured_mu = basis.project(crate::tangent::world(meas.mu));
+        let unloaded = !(meas.normal_force > 0.0);
+        let step = self
+            .laws
+            .with_pair_law(&self.attached, colliders, pair, &self.warned, |law| {
+                // The touching points' motion, only where the step reads it (a held contact
+                // is held whatever it slips).
+                let motion = if unloaded
+                    || slip_matters(&rec.state, law, None, meas.normal_force, measured_mu)
+                {
+                    let (p, surface) = world_centroid(m, colliders, pair)?;
+                    let relative =
+                        point_velocity(bodies, rb2, p) - point_velocity(bodies, rb1, p) - surface;
+                    let at_rest = unloaded && unloaded_at_rest(law, relative, dt);
+                    let inv = inv_mass(bodies, rb1) + inv_mass(bodies, rb2);
+                    (basis.project(crate::tangent::world(relative)), inv, at_rest)
+                } else {
+                    ([0.0; 2], 0.0, false)
+                };
+                let (slip, inv_mass, at_rest) = motion;
+                let out = step_contact(
+                    &mut rec.state,
+                    &ContactInput {
+                        law,
+                        source: None,
+                        rel: 1.0,
+                        basis: &basis,
+                        normal_force: meas.normal_force,
+                        measured_mu,
+                        slip,
+                        dt,
+                        time: self.clock.time,
+                        inv_mass,
+                        stiffness_time: self.config.stiffness_time,
+                        warm_start: 1.0,
+                    },
+                );
+                Some((out, at_rest))
+            });
+        let Some((out, at_rest)) = step else {
+            return (false, None);
+        };
         // Held (the solver's friction stayed below the limit, and the law sticks), formed,
         // or without load and at rest; a slipping, forming or giving contact is the hook's.
         let held = out.holding
             && rec.state.forming == 0
             && rec.state.regime == Regime::Sticking.code()
-            && meas.normal_force > 0.0;
-        let same = (held || (!(meas.normal_force > 0.0) && at_rest))
+            && !unloaded;
+        let same = (held || at_rest)
             && rec.state.limit.to_bits() == m.data.friction.to_bits()
             && out.target == [0.0; 2]
-            && surface == Vector::ZERO
             && m.data
                 .solver_contacts
                 .iter()
@@ -291,6 +385,7 @@ impl<H> StickSlip<H> {
         let dt = self.clock.dt as f32;
         let r = &mut self.recycling;
         let limit = DRIFT_SHARE * r.window;
+        let step_limit = MOTION_SHARE * r.window;
         let mut woken = std::mem::take(&mut r.next);
         woken.clear();
         for i in r.quiet.indices() {
@@ -298,9 +393,17 @@ impl<H> StickSlip<H> {
                 continue;
             };
             // Drifted, or given a velocity (by the user, between steps) that leaves the window.
+            // A collider that rides (moves more than a step's share of the window, see
+            // `settle_after_step`) is left to rapier: its pairs' full updates write the same.
             let moved = r.poses.get(h).is_none_or(|q| {
-                let now = pose_of(bodies, c);
-                !(drift(&q.pose(), &now, q.reach) + step_motion(bodies, c, q.reach, dt) <= limit)
+                let motion = step_motion(bodies, c, q.reach, dt);
+                if motion > step_limit {
+                    // Unless the user gave it a speed that is garbage (the kernel resets).
+                    !(motion <= MAX_SANE_SPEED as f32 * dt)
+                } else {
+                    let now = pose_of(bodies, c);
+                    !(drift(&q.pose(), &now, q.reach) + motion <= limit)
+                }
             });
             if r.wake_all || r.wake.contains(h) || moved || !(r.window > 0.0) {
                 woken.set(h, true);
@@ -328,6 +431,8 @@ impl<H> StickSlip<H> {
         colliders: &mut ColliderSet,
         mark: u32,
     ) {
+        // What the last `end_step` did ahead was for the step just solved.
+        self.store.clear_ahead();
         let window = self.recycling.window;
         let dt = self.clock.dt;
         if !(window > 0.0 && dt > 0.0) {
@@ -343,6 +448,8 @@ impl<H> StickSlip<H> {
         still.clear();
         let mut moving = std::mem::take(&mut self.recycling.moving);
         moving.clear();
+        let mut carried = std::mem::take(&mut self.recycling.carried);
+        carried.clear();
         // 1. Colliders that may go (or stay) quiet: stickslip's flag, not marked by the hook,
         //    no source, a body that barely moves.
         let step_limit = MOTION_SHARE * window;
@@ -364,14 +471,17 @@ impl<H> StickSlip<H> {
                 next.set(h, true);
                 continue;
             }
+            // A moving collider may be quiet too: its pairs then need that rapier's own full
+            // update, whenever rapier decides on one, writes what the hook would (see
+            // `rapiers_own`).
             let reach = reach_of(&self.recycling.poses, bodies, h, c);
-            if step_motion(bodies, c, reach, dt as f32) <= step_limit {
-                next.set(h, true);
-            } else {
+            next.set(h, true);
+            if step_motion(bodies, c, reach, dt as f32) > step_limit {
                 moving.set(h, true);
             }
         }
         // 2. Every pair of stickslip's that will not be hooked: its manifolds must be quiet.
+        let clustering = self.clock.clustering;
         let flagged = &self.flagged;
         let hooked_next = |h: ColliderHandle, attached: bool, next: &ColliderBits| {
             if attached && flagged.contains(h) {
@@ -400,83 +510,104 @@ impl<H> StickSlip<H> {
             {
                 continue;
             }
-            // The touching manifolds must each be written the same by the hook's next step.
-            let (mut touching, mut all) = (false, true);
+            let moves = |h: ColliderHandle| {
+                if flagged.contains(h) {
+                    moving.contains(h)
+                } else {
+                    colliders.get(h).is_some_and(|c| {
+                        let (_, reach) = anchor(bodies, c);
+                        step_motion(bodies, c, reach, dt as f32) > step_limit
+                    })
+                }
+            };
+            let pair_moves = moves(c1) || moves(c2);
+            // Rapier's own full update of a pair that moves writes the pair's combined
+            // friction coefficient and no target velocity.
+            let own = pair_moves.then(|| rapiers_own(colliders, c1, c2)).flatten();
+            // The touching manifolds must each be written the same by the hook's next step
+            // (and, for a pair that moves, by rapier's own full update).
+            let (mut touching, mut all, mut single) = (0usize, true, None);
             for m in pair.solver_manifolds() {
                 if m.data.solver_contacts.is_empty() {
                     continue;
                 }
-                touching = true;
-                let same = self
-                    .store
-                    .touch(m.data.user_data, c1, c2, mark)
-                    .is_some_and(|mut rec| {
-                        self.step_ahead(m, (c1, c2), bodies, colliders, &mut rec).0
-                    });
-                if !same {
-                    all = false;
-                    break;
+                touching += 1;
+                let stepped =
+                    self.store
+                        .touch(m.data.user_data, c1, c2, mark)
+                        .and_then(|mut rec| {
+                            let (same, meas) =
+                                self.step_ahead(m, (c1, c2), bodies, colliders, &mut rec);
+                            let same =
+                                same && (!pair_moves || own == Some(rec.state.limit.to_bits()));
+                            same.then_some((m.data.user_data, rec, meas))
+                        });
+                match stepped {
+                    Some(s) => single = Some(s),
+                    None => {
+                        all = false;
+                        break;
+                    }
                 }
             }
-            let quiet = if touching {
+            // Nothing touches yet: a counterpart that moves towards the other may make a
+            // contact rapier would form without the hook.
+            let quiet = if touching > 0 {
                 all
             } else {
-                // Nothing touches yet: a moving counterpart may make a contact rapier would
-                // form without the hook.
-                let moves = |h: ColliderHandle| {
-                    if flagged.contains(h) {
-                        moving.contains(h)
-                    } else {
-                        colliders.get(h).is_some_and(|c| {
-                            let (_, reach) = anchor(bodies, c);
-                            step_motion(bodies, c, reach, dt as f32) > step_limit
-                        })
-                    }
-                };
-                !(moves(c1) || moves(c2))
+                !pair_moves || relative_motion(bodies, colliders, c1, c2, dt as f32) <= step_limit
             };
+            if quiet && touching > 0 {
+                carried.set(c1, true);
+                carried.set(c2, true);
+            }
             if !quiet {
                 for h in self.sides_to_hook(bodies, colliders, c1, c2) {
                     next.set(h, false);
                 }
-            }
-        }
-        // 3. The hook's next step, done now on the manifolds that will be recycled (those
-        //    of pairs still unhooked once every pair is decided: a pair judged quiet can be
-        //    hooked again by a later pair's collider, and its record must then be left to
-        //    the hook).
-        let clustering = self.clock.clustering;
-        for pair in narrow_phase.contact_pairs() {
-            let (c1, c2) = (pair.collider1, pair.collider2);
-            let (a1, a2) = (self.attached.contains(c1), self.attached.contains(c2));
-            if !(a1 || a2)
-                || hooked_next(c1, a1, &next)
-                || hooked_next(c2, a2, &next)
-                || (is_still_now(c1) && is_still_now(c2))
-            {
                 continue;
             }
-            let mut patches = None;
-            for m in pair.solver_manifolds() {
-                if m.data.solver_contacts.is_empty() {
-                    continue;
+            // 3. The hook's next step, done now on the manifolds to be recycled (marked: if
+            //    a later pair hooks one of the colliders again, the hook writes what this
+            //    step found instead of stepping twice). A pair of several manifolds is
+            //    stepped again, the copies of the first pass being gone.
+            let composite = clustering
+                && [c1, c2]
+                    .into_iter()
+                    .any(|h| colliders.get(h).is_some_and(|c| is_composite(c.shape())));
+            let patches = composite.then_some(&mut self.patches_measured);
+            if touching == 1 {
+                if let Some((user_data, rec, meas)) = single {
+                    commit_ahead(
+                        &mut self.store,
+                        patches,
+                        (user_data, c1, c2, mark),
+                        rec,
+                        meas,
+                    );
                 }
-                let Some(mut rec) = self.store.touch(m.data.user_data, c1, c2, mark) else {
-                    continue;
-                };
-                let (_, meas) = self.step_ahead(m, (c1, c2), bodies, colliders, &mut rec);
-                self.store
-                    .update(m.data.user_data, c1, c2, mark, |r| *r = rec);
-                // Composite patches keep their measurement for the next hooked step.
-                let composite = *patches.get_or_insert_with(|| {
-                    clustering
-                        && [c1, c2]
-                            .into_iter()
-                            .any(|h| colliders.get(h).is_some_and(|c| is_composite(c.shape())))
-                });
-                if let (true, Some(meas)) = (composite, meas) {
-                    self.patches_measured.insert(m.data.user_data, meas);
+            } else {
+                for m in pair.solver_manifolds() {
+                    if m.data.solver_contacts.is_empty() {
+                        continue;
+                    }
+                    let Some(mut rec) = self.store.touch(m.data.user_data, c1, c2, mark) else {
+                        continue;
+                    };
+                    let (_, meas) = self.step_ahead(m, (c1, c2), bodies, colliders, &mut rec);
+                    let patches = composite.then_some(&mut self.patches_measured);
+                    let at = (m.data.user_data, c1, c2, mark);
+                    commit_ahead(&mut self.store, patches, at, rec, meas);
                 }
+            }
+        }
+        // A collider that moves rides only on something it touches: one in flight is hooked
+        // (its landing is a new contact, rapier would form it without the hook).
+        for i in moving.indices() {
+            if let Some((_, h)) = colliders.get_unknown_gen(i)
+                && !carried.contains(h)
+            {
+                next.set(h, false);
             }
         }
         // 4. The flags.
@@ -502,9 +633,15 @@ impl<H> StickSlip<H> {
             }
         }
         for i in next.indices() {
-            if let Some((c, h)) = colliders.get_unknown_gen(i)
-                && !r.quiet.contains(h)
-            {
+            let Some((c, h)) = colliders.get_unknown_gen(i) else {
+                continue;
+            };
+            // A quiet collider that moves rides: rapier updates its pairs in full whenever
+            // it decides to, and that writes what the hook would. One that barely moves is
+            // hooked again before rapier would update its pairs without the hook.
+            // Its pose is kept current, so it is hooked again only if it stops and then
+            // drifts.
+            if moving.contains(h) || !r.quiet.contains(h) {
                 let (pose, reach) = anchor(bodies, c);
                 r.poses.insert(h, QuietPose::new(&pose, reach));
             }
@@ -512,6 +649,7 @@ impl<H> StickSlip<H> {
         r.next = std::mem::replace(&mut r.quiet, next);
         r.still = still;
         r.moving = moving;
+        r.carried = carried;
         r.active.clear();
     }
 }

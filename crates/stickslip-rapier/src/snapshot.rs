@@ -313,6 +313,10 @@ struct RecordSnapshot {
     /// The warm start of the last solve (kept by rapier 0.35 builds only; 0 otherwise).
     #[serde(default)]
     warm_start_impulse: f32,
+    /// The record holds the hook's next step already (absent in files of builds that never
+    /// stepped ahead: false is what they meant).
+    #[serde(default)]
+    ahead: bool,
 }
 
 impl From<&LiveImage> for RecordSnapshot {
@@ -334,6 +338,7 @@ impl From<&LiveImage> for RecordSnapshot {
             warm_start_impulse: l.record.warm_start_impulse,
             #[cfg(not(rapier_035))]
             warm_start_impulse: 0.0,
+            ahead: l.record.ahead,
         }
     }
 }
@@ -393,6 +398,7 @@ impl RecordSnapshot {
                     forming: self.forming,
                 },
                 inner_user_data: self.inner_user_data,
+                ahead: self.ahead,
                 #[cfg(rapier_035)]
                 warm_start_impulse: self.warm_start_impulse,
             },

@@ -46,7 +46,9 @@ pub mod vibration;
 mod vibration_limit;
 
 pub use state::{ContactState, REGIME_NONE, REGIME_RESET};
-pub use step::{ContactInput, ContactOutput, GIVING, SATURATION, step_contact};
+pub use step::{
+    ContactInput, ContactOutput, GIVING, MAX_SANE_SPEED, SATURATION, slip_matters, step_contact,
+};
 pub use tangent::{TangentBasis, World, dot, length};
 pub use vibration::{
     Amplitude, MAX_AXIS_COSINE, MAX_COMPONENTS, MAX_FORCE, MAX_FREQUENCY, MAX_RATIO,

@@ -36,7 +36,8 @@
 //! at rest stays at rest as under plain rapier.
 //!
 //! **Contact forming.** For the two steps after a solve that started cold — a new contact or a
-//! landing (no warm start), or a clustered mesh patch whose points rapier re-picked while the
+//! landing (no warm start), a contact the kernel first meets already loaded (the engine formed
+//! it without the adapter), or a clustered mesh patch whose points rapier re-picked while the
 //! contact held (warm-started with < 90 % of the last normal impulse) — the contact holds at
 //! its capacity whatever the solver did: that solve built the normal force up while friction
 //! was capped by the part built so far, and the next stops the slip that let through. Plain
@@ -63,7 +64,7 @@
 //! friction row holds a loaded box as tightly as the law's elastic range (an incline at 0.95
 //! of break-away: −4.7 µm in 10 s against g_ba = 50 µm), and the stack stands.
 
-use super::state::{ContactState, REGIME_RESET};
+use super::state::{ContactState, REGIME_NONE, REGIME_RESET};
 use super::tangent::{TangentBasis, length};
 use super::vibration::{VibrationMode, VibrationSource};
 use super::vibration_limit::{in_plane_force, in_plane_limit, normal_factor, static_factor};
@@ -77,7 +78,8 @@ pub const SATURATION: f64 = 1e-3;
 /// Beyond these a contact's inputs are garbage for an f32 solver, not physics: a force whose
 /// friction share overflows f32, a slip faster than anything rapier integrates meaningfully.
 const MAX_SANE_FORCE: f64 = 1e30;
-const MAX_SANE_SPEED: f64 = 1e15;
+/// The fastest slip (m/s) the kernel takes for physics: beyond it, it resets the contact.
+pub const MAX_SANE_SPEED: f64 = 1e15;
 
 /// A solve warm-started with less than this share of the last solve's normal impulse starts
 /// cold: the contact forms again.
@@ -206,6 +208,27 @@ fn gives(rec: &ContactState, input: &ContactInput, saturated: bool, speed: f64) 
     }
 }
 
+/// Whether [`step_contact`] reads the slip (and the bodies' inverse mass) of this contact:
+/// not for a contact whose law sticks, that carries a load and whose last solve stayed below
+/// the limit, with no vibration source — it is held, whatever it slips. An adapter may then
+/// pass a zero slip and skip finding it.
+pub fn slip_matters(
+    rec: &ContactState,
+    law: &Law,
+    source: Option<&VibrationSource>,
+    normal_force: f64,
+    measured_mu: Vec2,
+) -> bool {
+    let mu_meas = vec2::norm(measured_mu);
+    let reached = rec.limit > 0.0 && mu_meas >= (1.0 - SATURATION) * rec.limit as f64;
+    !(source.is_none()
+        && law.can_stick()
+        && normal_force > 0.0
+        && normal_force <= MAX_SANE_FORCE
+        && mu_meas.is_finite()
+        && !reached)
+}
+
 /// One step of one contact patch: updates `rec` and returns what the solver gets.
 pub fn step_contact(rec: &mut ContactState, input: &ContactInput) -> ContactOutput {
     let ContactInput {
@@ -276,6 +299,11 @@ pub fn step_contact(rec: &mut ContactState, input: &ContactInput) -> ContactOutp
         // state seeded with the friction it carried; only a slip under a limit the law set
         // counts.
         // A slipping contact's friction is the law's sliding level whatever the warm start.
+        if rec.regime == REGIME_NONE {
+            // A contact the kernel meets loaded (rapier formed it in a step without the
+            // adapter, or it was attached in contact): that solve was its cold one.
+            rec.forming = FORMING_STEPS;
+        }
         let was_holding = rec.slip_speed == 0.0;
         let giving_before = rec.forming == GIVING;
         let forming = rec.forming > 0 && !giving_before;
@@ -446,6 +474,36 @@ pub fn step_contact(rec: &mut ContactState, input: &ContactInput) -> ContactOutp
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_held_contact_steps_the_same_whatever_it_slips() {
+        let law = ep();
+        let b = basis();
+        for (limit, mu) in [(0.5f32, [0.2, 0.1]), (0.55, [0.0, 0.4]), (0.5, [0.5, 0.0])] {
+            let start = ContactState {
+                limit,
+                mean_normal_force: 100.0,
+                force: [20.0, 0.0, 10.0],
+                regime: Regime::Sticking.code(),
+                ..ContactState::default()
+            };
+            let matters = slip_matters(&start, &law, None, 100.0, mu);
+            let outputs: Vec<_> = [[0.0, 0.0], [1e-3, -2e-3], [0.3, 0.0]]
+                .into_iter()
+                .map(|slip| {
+                    let mut rec = start;
+                    let out = step_contact(&mut rec, &input(&law, &b, mu, slip));
+                    (out, rec)
+                })
+                .collect();
+            if !matters {
+                assert!(outputs.iter().all(|o| *o == outputs[0]), "{outputs:?}");
+            } else {
+                // At the limit the slip decides between holding and slipping.
+                assert!(outputs.iter().any(|o| *o != outputs[0]), "{outputs:?}");
+            }
+        }
+    }
     use crate::sliding_curve::Curve;
 
     fn ep() -> Law {
