@@ -86,7 +86,9 @@ use crate::contact_store::{ContactRecord, ContactStore};
 use crate::hook::inv_mass;
 use crate::measure::{Measured, measure, point_velocity, world_centroid};
 use crate::modifier::StickSlip;
+use crate::pair_law::PairLaws;
 use crate::quiet::{DRIFT_SHARE, MOTION_SHARE, QuietPose};
+use crate::warnings::Warned;
 use rapier::prelude::*;
 use std::collections::HashMap;
 use stickslip_core::contact::{ContactInput, MAX_SANE_SPEED, slip_matters, step_contact};
@@ -260,6 +262,103 @@ fn is_still(
         .is_none_or(|b| b.is_fixed() || (or_asleep && b.is_sleeping()))
 }
 
+/// What the hook's next step on a recycled manifold needs besides the manifold: the pairs'
+/// laws, the next step's clock and the tuning (borrowed apart from the contact store, which
+/// takes the step).
+struct Ahead<'a> {
+    laws: &'a PairLaws,
+    attached: &'a ColliderBits,
+    warned: &'a Warned,
+    dt: f64,
+    time: f64,
+    stiffness_time: f64,
+}
+
+impl Ahead<'_> {
+    /// The hook's next step on a manifold, done on `rec` now, after the solve: the kernel
+    /// with the inputs the hook reads at the next step (this solve's normal force and
+    /// friction, the slip of the touching points at the velocities after it, the next step's
+    /// clock), as when rapier recycles the manifold (its points kept, so its warm start
+    /// whole). Returns whether that step writes what the solver already has — the same
+    /// limit, to the bit, and no target velocity, over solver contacts that have none — and
+    /// the measurement.
+    fn step(
+        &self,
+        m: &ContactManifold,
+        pair: (ColliderHandle, ColliderHandle),
+        bodies: &RigidBodySet,
+        colliders: &ColliderSet,
+        rec: &mut ContactRecord,
+    ) -> (bool, Option<Measured>) {
+        let dt = self.dt;
+        let (rb1, rb2) = (m.data.rigid_body1, m.data.rigid_body2);
+        let basis = crate::tangent::basis(m.data.normal);
+        let meas = measure(
+            m,
+            &m.data.solver_contacts,
+            dt,
+            crate::rapier_compat::warm_before(rec),
+        );
+        crate::rapier_compat::remember_warm_start(rec, meas.warm_start_impulse);
+        let measured_mu = basis.project(crate::tangent::world(meas.mu));
+        let unloaded = !(meas.normal_force > 0.0);
+        let step = self
+            .laws
+            .with_pair_law(self.attached, colliders, pair, self.warned, |law| {
+                // The touching points' motion, only where the step reads it (a held contact
+                // is held whatever it slips).
+                let motion = if unloaded
+                    || slip_matters(&rec.state, law, None, meas.normal_force, measured_mu)
+                {
+                    let (p, surface) = world_centroid(m, colliders, pair)?;
+                    let relative =
+                        point_velocity(bodies, rb2, p) - point_velocity(bodies, rb1, p) - surface;
+                    let at_rest = unloaded && unloaded_at_rest(law, relative, dt);
+                    let inv = inv_mass(bodies, rb1) + inv_mass(bodies, rb2);
+                    (basis.project(crate::tangent::world(relative)), inv, at_rest)
+                } else {
+                    ([0.0; 2], 0.0, false)
+                };
+                let (slip, inv_mass, at_rest) = motion;
+                let out = step_contact(
+                    &mut rec.state,
+                    &ContactInput {
+                        law,
+                        source: None,
+                        rel: 1.0,
+                        basis: &basis,
+                        normal_force: meas.normal_force,
+                        measured_mu,
+                        slip,
+                        dt,
+                        time: self.time,
+                        inv_mass,
+                        stiffness_time: self.stiffness_time,
+                        warm_start: 1.0,
+                    },
+                );
+                Some((out, at_rest))
+            });
+        let Some((out, at_rest)) = step else {
+            return (false, None);
+        };
+        // Held (the solver's friction stayed below the limit, and the law sticks), formed,
+        // or without load and at rest; a slipping, forming or giving contact is the hook's.
+        let held = out.holding
+            && rec.state.forming == 0
+            && rec.state.regime == Regime::Sticking.code()
+            && !unloaded;
+        let same = (held || at_rest)
+            && rec.state.limit.to_bits() == m.data.friction.to_bits()
+            && out.target == [0.0; 2]
+            && m.data
+                .solver_contacts
+                .iter()
+                .all(|c| c.tangent_velocity == Vector::ZERO);
+        (same, Some(meas))
+    }
+}
+
 impl<H> StickSlip<H> {
     /// Marks the colliders a hooked manifold whose write changed keeps hooked: those of
     /// moving bodies among its attached ones (all attached ones if none moves).
@@ -294,89 +393,6 @@ impl<H> StickSlip<H> {
         [(c1, k1), (c2, k2)]
             .into_iter()
             .filter_map(|(h, keep)| keep.then_some(h))
-    }
-
-    /// The hook's next step on a manifold, done on `rec` now, after the solve: the kernel
-    /// with the inputs the hook reads at the next step (this solve's normal force and
-    /// friction, the slip of the touching points at the velocities after it, the next step's
-    /// clock), as when rapier recycles the manifold (its points kept, so its warm start
-    /// whole). Returns whether that step writes what the solver already has — the same
-    /// limit, to the bit, and no target velocity, over solver contacts that have none — and
-    /// the measurement.
-    pub(crate) fn step_ahead(
-        &self,
-        m: &ContactManifold,
-        pair: (ColliderHandle, ColliderHandle),
-        bodies: &RigidBodySet,
-        colliders: &ColliderSet,
-        rec: &mut ContactRecord,
-    ) -> (bool, Option<Measured>) {
-        let dt = self.clock.dt;
-        let (rb1, rb2) = (m.data.rigid_body1, m.data.rigid_body2);
-        let basis = crate::tangent::basis(m.data.normal);
-        let meas = measure(
-            m,
-            &m.data.solver_contacts,
-            dt,
-            crate::rapier_compat::warm_before(rec),
-        );
-        crate::rapier_compat::remember_warm_start(rec, meas.warm_start_impulse);
-        let measured_mu = basis.project(crate::tangent::world(meas.mu));
-        let unloaded = !(meas.normal_force > 0.0);
-        let step = self
-            .laws
-            .with_pair_law(&self.attached, colliders, pair, &self.warned, |law| {
-                // The touching points' motion, only where the step reads it (a held contact
-                // is held whatever it slips).
-                let motion = if unloaded
-                    || slip_matters(&rec.state, law, None, meas.normal_force, measured_mu)
-                {
-                    let (p, surface) = world_centroid(m, colliders, pair)?;
-                    let relative =
-                        point_velocity(bodies, rb2, p) - point_velocity(bodies, rb1, p) - surface;
-                    let at_rest = unloaded && unloaded_at_rest(law, relative, dt);
-                    let inv = inv_mass(bodies, rb1) + inv_mass(bodies, rb2);
-                    (basis.project(crate::tangent::world(relative)), inv, at_rest)
-                } else {
-                    ([0.0; 2], 0.0, false)
-                };
-                let (slip, inv_mass, at_rest) = motion;
-                let out = step_contact(
-                    &mut rec.state,
-                    &ContactInput {
-                        law,
-                        source: None,
-                        rel: 1.0,
-                        basis: &basis,
-                        normal_force: meas.normal_force,
-                        measured_mu,
-                        slip,
-                        dt,
-                        time: self.clock.time,
-                        inv_mass,
-                        stiffness_time: self.config.stiffness_time,
-                        warm_start: 1.0,
-                    },
-                );
-                Some((out, at_rest))
-            });
-        let Some((out, at_rest)) = step else {
-            return (false, None);
-        };
-        // Held (the solver's friction stayed below the limit, and the law sticks), formed,
-        // or without load and at rest; a slipping, forming or giving contact is the hook's.
-        let held = out.holding
-            && rec.state.forming == 0
-            && rec.state.regime == Regime::Sticking.code()
-            && !unloaded;
-        let same = (held || at_rest)
-            && rec.state.limit.to_bits() == m.data.friction.to_bits()
-            && out.target == [0.0; 2]
-            && m.data
-                .solver_contacts
-                .iter()
-                .all(|c| c.tangent_velocity == Vector::ZERO);
-        (same, Some(meas))
     }
 
     /// Before a step: hooks again the quiet colliders that were asked to be (changed
@@ -482,6 +498,17 @@ impl<H> StickSlip<H> {
         }
         // 2. Every pair of stickslip's that will not be hooked: its manifolds must be quiet.
         let clustering = self.clock.clustering;
+        // 3. (in the loop) The hook's next step, done now on the manifolds to be recycled
+        //    and kept in their records, marked: if a later pair hooks one of the colliders
+        //    again, the hook writes what this step found instead of stepping twice.
+        let ahead = Ahead {
+            laws: &self.laws,
+            attached: &self.attached,
+            warned: &self.warned,
+            dt,
+            time: self.clock.time,
+            stiffness_time: self.config.stiffness_time,
+        };
         let flagged = &self.flagged;
         let hooked_next = |h: ColliderHandle, attached: bool, next: &ColliderBits| {
             if attached && flagged.contains(h) {
@@ -526,78 +553,86 @@ impl<H> StickSlip<H> {
             let own = pair_moves.then(|| rapiers_own(colliders, c1, c2)).flatten();
             // The touching manifolds must each be written the same by the hook's next step
             // (and, for a pair that moves, by rapier's own full update).
-            let (mut touching, mut all, mut single) = (0usize, true, None);
-            for m in pair.solver_manifolds() {
-                if m.data.solver_contacts.is_empty() {
-                    continue;
-                }
-                touching += 1;
-                let stepped =
-                    self.store
-                        .touch(m.data.user_data, c1, c2, mark)
-                        .and_then(|mut rec| {
-                            let (same, meas) =
-                                self.step_ahead(m, (c1, c2), bodies, colliders, &mut rec);
-                            let same =
-                                same && (!pair_moves || own == Some(rec.state.limit.to_bits()));
-                            same.then_some((m.data.user_data, rec, meas))
-                        });
-                match stepped {
-                    Some(s) => single = Some(s),
-                    None => {
-                        all = false;
-                        break;
-                    }
-                }
-            }
-            // Nothing touches yet: a counterpart that moves towards the other may make a
-            // contact rapier would form without the hook.
-            let quiet = if touching > 0 {
-                all
-            } else {
-                !pair_moves || relative_motion(bodies, colliders, c1, c2, dt as f32) <= step_limit
+            let keeps = |rec: &ContactRecord, same: bool| {
+                same && (!pair_moves || own == Some(rec.state.limit.to_bits()))
             };
-            if quiet && touching > 0 {
-                carried.set(c1, true);
-                carried.set(c2, true);
-            }
-            if !quiet {
-                for h in self.sides_to_hook(bodies, colliders, c1, c2) {
-                    next.set(h, false);
-                }
-                continue;
-            }
-            // 3. The hook's next step, done now on the manifolds to be recycled (marked: if
-            //    a later pair hooks one of the colliders again, the hook writes what this
-            //    step found instead of stepping twice). A pair of several manifolds is
-            //    stepped again, the copies of the first pass being gone.
             let composite = clustering
                 && [c1, c2]
                     .into_iter()
                     .any(|h| colliders.get(h).is_some_and(|c| is_composite(c.shape())));
-            let patches = composite.then_some(&mut self.patches_measured);
-            if touching == 1 {
-                if let Some((user_data, rec, meas)) = single {
-                    commit_ahead(
-                        &mut self.store,
-                        patches,
-                        (user_data, c1, c2, mark),
-                        rec,
-                        meas,
-                    );
+            let mut touching = pair
+                .solver_manifolds()
+                .iter()
+                .filter(|m| !m.data.solver_contacts.is_empty());
+            let quiet = match (touching.next(), touching.next()) {
+                // Nothing touches yet: a counterpart that moves towards the other may make a
+                // contact rapier would form without the hook.
+                (None, _) => {
+                    !pair_moves
+                        || relative_motion(bodies, colliders, c1, c2, dt as f32) <= step_limit
                 }
-            } else {
-                for m in pair.solver_manifolds() {
-                    if m.data.solver_contacts.is_empty() {
-                        continue;
+                // One manifold (the common case): stepped in place, and kept if quiet (3.).
+                (Some(m), None) => {
+                    let ud = m.data.user_data;
+                    let kept = self.store.update(ud, c1, c2, mark, |rec| {
+                        let before = *rec;
+                        let (same, meas) = ahead.step(m, (c1, c2), bodies, colliders, rec);
+                        if keeps(rec, same) {
+                            rec.ahead = true;
+                            Some(meas)
+                        } else {
+                            *rec = before;
+                            None
+                        }
+                    });
+                    match kept.flatten() {
+                        Some(meas) => {
+                            if let (true, Some(meas)) = (composite, meas) {
+                                self.patches_measured.insert(ud, meas);
+                            }
+                            carried.set(c1, true);
+                            carried.set(c2, true);
+                            true
+                        }
+                        None => false,
                     }
-                    let Some(mut rec) = self.store.touch(m.data.user_data, c1, c2, mark) else {
-                        continue;
-                    };
-                    let (_, meas) = self.step_ahead(m, (c1, c2), bodies, colliders, &mut rec);
-                    let patches = composite.then_some(&mut self.patches_measured);
-                    let at = (m.data.user_data, c1, c2, mark);
-                    commit_ahead(&mut self.store, patches, at, rec, meas);
+                }
+                // Several: each tried on a copy, then stepped for good if all are quiet.
+                _ => {
+                    let all = pair.solver_manifolds().iter().all(|m| {
+                        m.data.solver_contacts.is_empty()
+                            || self
+                                .store
+                                .touch(m.data.user_data, c1, c2, mark)
+                                .is_some_and(|mut rec| {
+                                    let (same, _) =
+                                        ahead.step(m, (c1, c2), bodies, colliders, &mut rec);
+                                    keeps(&rec, same)
+                                })
+                    });
+                    if all {
+                        for m in pair.solver_manifolds() {
+                            if m.data.solver_contacts.is_empty() {
+                                continue;
+                            }
+                            let Some(mut rec) = self.store.touch(m.data.user_data, c1, c2, mark)
+                            else {
+                                continue;
+                            };
+                            let (_, meas) = ahead.step(m, (c1, c2), bodies, colliders, &mut rec);
+                            let patches = composite.then_some(&mut self.patches_measured);
+                            let at = (m.data.user_data, c1, c2, mark);
+                            commit_ahead(&mut self.store, patches, at, rec, meas);
+                        }
+                        carried.set(c1, true);
+                        carried.set(c2, true);
+                    }
+                    all
+                }
+            };
+            if !quiet {
+                for h in self.sides_to_hook(bodies, colliders, c1, c2) {
+                    next.set(h, false);
                 }
             }
         }

@@ -13,11 +13,20 @@ const REST_TARGET: f64 = 1.10;
 /// Target (issue 27): EP's step time over plain rapier's in active scenes (sliding, tumbling,
 /// driven), where rapier recycles little and stickslip's hook runs on most contacts.
 const ACTIVE_PLAIN_TARGET: f64 = 1.25;
-/// Target (issue 27): EP's step time over the no-op hook on the same colliders in active
-/// scenes (stickslip's own per-contact work), and that of EP with a vibration source.
+/// Target (issue 38): EP's step time over the no-op hook on the same colliders in active
+/// scenes (stickslip's own per-contact work).
+const ACTIVE_HOOK_TARGET: f64 = 1.05;
+/// Target (issue 27): the step time of EP with a vibration source over the no-op hook.
 const TIME_TARGET: f64 = 1.10;
 /// Scenes at rest (by name prefix): stacks, heaps and rows that stand still once settled.
-const RESTING: [&str; 5] = ["plane_", "pile_", "towers_", "compounds_", "dominoes_"];
+const RESTING: [&str; 6] = [
+    "plane_",
+    "pile_",
+    "towers_",
+    "compounds_",
+    "dominoes_",
+    "keva_",
+];
 
 fn is_resting(scene: &str) -> bool {
     RESTING.iter().any(|p| scene.starts_with(p))
@@ -92,10 +101,11 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
          pairs, so this is the floor of any contact modifier), and by stickslip with each law and \
          with a normal vibration source (ratio 0.3) in either mode on the ground/trough. In the \
          first seven scenes every dynamic body has sleeping disabled; the five after rapier's \
-         examples leave sleeping as the examples do, except the compound heap and the \
-         dominoes, which would sleep before they are measured. Targets (issue 27): in scenes \
-         at rest, EP ≤ 1.10× plain rapier; in active scenes, ≤ 1.25× plain rapier and ≤ \
-         1.10× the no-op hook.\n\n\
+         examples leave sleeping as the examples do, except the compound heap, the \
+         dominoes and the keva tower, which would sleep before they are measured. Targets \
+         (issues 27 and 38): in scenes at rest, EP ≤ 1.10× plain rapier; in active scenes, \
+         ≤ 1.25× plain rapier and ≤ 1.05× the no-op hook; with a vibration source, ≤ 1.10× \
+         the no-op hook.\n\n\
          Two timings of the same binary (`benches/benches/step_cost.rs`), both in **CPU time of the \
          stepping thread** (`CLOCK_THREAD_CPUTIME_ID`; steps are single-threaded, so on an idle \
          machine this is the wall time, and on this shared 2-core machine it leaves out the time \
@@ -169,10 +179,10 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
                     let met = paired_vs_base <= REST_TARGET;
                     format!("≤ {REST_TARGET:.2}× plain: {}", table::verdict(met))
                 } else {
-                    let met =
-                        paired_vs_base <= ACTIVE_PLAIN_TARGET && paired_vs_noop <= TIME_TARGET;
+                    let met = paired_vs_base <= ACTIVE_PLAIN_TARGET
+                        && paired_vs_noop <= ACTIVE_HOOK_TARGET;
                     format!(
-                        "≤ {ACTIVE_PLAIN_TARGET:.2}× plain, ≤ {TIME_TARGET:.2}× no-op: {}",
+                        "≤ {ACTIVE_PLAIN_TARGET:.2}× plain, ≤ {ACTIVE_HOOK_TARGET:.2}× no-op: {}",
                         table::verdict(met)
                     )
                 }
@@ -315,9 +325,11 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
         } else {
             summary.add(
                 format!("step time, EP, `{scene}` (active)"),
-                &format!("≤ {ACTIVE_PLAIN_TARGET}× plain rapier, ≤ {TIME_TARGET}× no-op hook"),
+                &format!(
+                    "≤ {ACTIVE_PLAIN_TARGET}× plain rapier, ≤ {ACTIVE_HOOK_TARGET}× no-op hook"
+                ),
                 format!("{} plain, {} no-op", ratio(*plain), ratio(*noop)),
-                *plain <= ACTIVE_PLAIN_TARGET && *noop <= TIME_TARGET,
+                *plain <= ACTIVE_PLAIN_TARGET && *noop <= ACTIVE_HOOK_TARGET,
             );
         }
     }
