@@ -75,7 +75,20 @@ fn box_collider(world: &PhysicsWorld, b: RigidBodyHandle) -> ColliderHandle {
 /// the tangent rises by `rate` per second from 0.3, and the share of the hold before 0.35 in
 /// which the box's contacts were recycled.
 fn break_away_under_a_ramp(mass: f32, dt: f64, recycling: bool, rate: f64) -> (f64, f64) {
-    let (mut world, mut m, b) = scene(mass, dt, recycling);
+    let (world, m, b) = scene(mass, dt, recycling);
+    ramp_to_break_away(world, m, b, dt, rate)
+}
+
+/// Raises the slope's tangent by `rate` per second from 0.3 until body `b` slides (downhill
+/// speed above 1 cm/s): the tangent then, and the share of the hold before 0.35 in which its
+/// collider's contacts were recycled.
+fn ramp_to_break_away(
+    mut world: PhysicsWorld,
+    mut m: StickSlip,
+    b: RigidBodyHandle,
+    dt: f64,
+    rate: f64,
+) -> (f64, f64) {
     let collider = box_collider(&world, b);
     let (mut recycled, mut held) = (0usize, 0usize);
     let mut tan = 0.3;
@@ -91,21 +104,23 @@ fn break_away_under_a_ramp(mass: f32, dt: f64, recycling: bool, rate: f64) -> (f
         }
         tan += rate * dt;
     }
-    panic!("no break-away below tan 0.8 (mass {mass}, dt {dt})");
+    panic!("no break-away below tan 0.8 (dt {dt})");
 }
 
-#[test]
-fn a_recycled_contact_breaks_away_under_a_rising_load_where_a_hooked_one_does() {
+/// For masses over four decades and two time steps, `break_away(mass, dt, recycling, rate)`
+/// recycles the held box (`what`) and breaks away at μ_ba, at the same load recycled or
+/// hooked every step.
+fn breaks_away_as_hooked(what: &str, break_away: fn(f32, f64, bool, f64) -> (f64, f64)) {
     for dt in [1.0 / 60.0, 1.0 / 240.0] {
         for mass in [0.1f32, 10.0, 1000.0] {
-            let (recycled_at, share) = break_away_under_a_ramp(mass, dt, true, 0.05);
-            let (hooked_at, none) = break_away_under_a_ramp(mass, dt, false, 0.05);
+            let (recycled_at, share) = break_away(mass, dt, true, 0.05);
+            let (hooked_at, none) = break_away(mass, dt, false, 0.05);
             println!(
-                "dt {dt:.4} mass {mass:6}: break-away tan {recycled_at:.4} recycled \
+                "dt {dt:.4} mass {mass:6}: {what} breaks away at tan {recycled_at:.4} recycled \
                  ({:.0} % of the hold recycled), {hooked_at:.4} hooked",
                 100.0 * share
             );
-            assert!(share > 0.9, "the resting contact was recycled {share}");
+            assert!(share > 0.9, "the {what} was recycled {share}");
             assert_eq!(none, 0.0, "nothing recycles with contact_recycling off");
             // Break-away at μ_ba (the tangent grows by rate·dt per step; the box needs a few
             // steps to pass 1 cm/s) and at the same load either way.
@@ -118,6 +133,11 @@ fn a_recycled_contact_breaks_away_under_a_rising_load_where_a_hooked_one_does() 
             );
         }
     }
+}
+
+#[test]
+fn a_recycled_contact_breaks_away_under_a_rising_load_where_a_hooked_one_does() {
+    breaks_away_as_hooked("resting box", break_away_under_a_ramp);
 }
 
 /// A box of `mass` carried at 0.5 m/s along z by a kinematic platform (so it moves 2–8 mm a
@@ -154,45 +174,12 @@ fn break_away_on_a_moving_platform(mass: f32, dt: f64, recycling: bool, rate: f6
     for _ in 0..(0.5 / dt) as usize {
         m.step(&mut world);
     }
-    let (mut recycled, mut held) = (0usize, 0usize);
-    let mut tan = 0.3;
-    while tan < 0.8 {
-        set_slope(&mut world, tan);
-        m.step(&mut world);
-        if tan < 0.35 {
-            held += 1;
-            recycled += usize::from(m.is_recycled(on));
-        }
-        if world.bodies[b].linvel().x > 0.01 {
-            return (tan, recycled as f64 / held as f64);
-        }
-        tan += rate * dt;
-    }
-    panic!("no break-away below tan 0.8 (mass {mass}, dt {dt})");
+    ramp_to_break_away(world, m, b, dt, rate)
 }
 
 #[test]
 fn a_carried_contact_recycles_and_breaks_away_where_a_hooked_one_does() {
-    for dt in [1.0 / 60.0, 1.0 / 240.0] {
-        for mass in [0.1f32, 10.0, 1000.0] {
-            let (recycled_at, share) = break_away_on_a_moving_platform(mass, dt, true, 0.05);
-            let (hooked_at, none) = break_away_on_a_moving_platform(mass, dt, false, 0.05);
-            println!(
-                "dt {dt:.4} mass {mass:6}: carried box breaks away at tan {recycled_at:.4} \
-                 recycled ({:.0} % of the hold recycled), {hooked_at:.4} hooked",
-                100.0 * share
-            );
-            assert!(share > 0.9, "the carried contact was recycled {share}");
-            assert_eq!(none, 0.0, "nothing recycles with contact_recycling off");
-            for at in [recycled_at, hooked_at] {
-                assert!((at - MU_BA).abs() < 0.01, "break-away at tan {at}");
-            }
-            assert!(
-                (recycled_at - hooked_at).abs() < 2.0 * 0.05 * dt + 1e-9,
-                "recycled {recycled_at} vs hooked {hooked_at}"
-            );
-        }
-    }
+    breaks_away_as_hooked("carried box", break_away_on_a_moving_platform);
 }
 
 /// Downhill displacement (m) over 2 s and the final acceleration (m/s²) of a box resting
