@@ -321,40 +321,9 @@ fn resumes_bit_identically(
     recycled
 }
 
-#[test]
-fn a_snapshot_taken_while_contacts_recycle_resumes_bit_identically() {
-    let mut world = PhysicsWorld::default();
-    world.insert_collider(ColliderBuilder::cuboid(10.0, 0.5, 10.0), None);
-    for i in 0..36 {
-        let (x, z) = ((i % 6) as f32 - 2.5, (i / 6) as f32 - 2.5);
-        for level in 0..2 {
-            world.insert(
-                RigidBodyBuilder::dynamic()
-                    .translation(Vector::new(1.2 * x, 0.76 + 0.5 * level as f32, 1.2 * z))
-                    .can_sleep(false),
-                ColliderBuilder::cuboid(0.25, 0.25, 0.25).density(500.0),
-            );
-        }
-    }
-    let mut m = StickSlip::new(FrictionMaterial::new(ep()));
-    for h in world.colliders.iter().map(|(h, _)| h).collect::<Vec<_>>() {
-        m.attach(&mut world.colliders, h, None);
-    }
-    // After the snapshot the floor tilts past break-away: recycled contacts are hooked again
-    // in both runs, and the stacks slide.
-    let recycled = resumes_bit_identically(world, m, 120, 240, 60, |w| set_slope(w, 0.7));
-    assert!(recycled >= 60, "only {recycled} colliders recycled");
-}
-
-#[test]
-fn a_snapshot_taken_while_carried_contacts_recycle_resumes_bit_identically() {
-    let mut world = PhysicsWorld::default();
-    let v = Vector::new(0.0, 0.0, 0.5);
-    let platform = world.insert_body(RigidBodyBuilder::kinematic_velocity_based().linvel(v));
-    world.insert_collider(
-        ColliderBuilder::cuboid(10.0, 0.5, 200.0).friction(MU_BA as f32),
-        Some(platform),
-    );
+/// 36 stacks of two 0.5 m boxes (friction μ_ba, moving at `v`) on the ground already in
+/// `world`, every collider attached.
+fn stacks_on(world: &mut PhysicsWorld, v: Vector) -> StickSlip {
     for i in 0..36 {
         let (x, z) = ((i % 6) as f32 - 2.5, (i / 6) as f32 - 2.5);
         for level in 0..2 {
@@ -370,10 +339,36 @@ fn a_snapshot_taken_while_carried_contacts_recycle_resumes_bit_identically() {
         }
     }
     let mut m = StickSlip::new(FrictionMaterial::new(ep()));
-    let all: Vec<_> = world.colliders.iter().map(|(h, _)| h).collect();
-    for h in all {
+    for h in world.colliders.iter().map(|(h, _)| h).collect::<Vec<_>>() {
         m.attach(&mut world.colliders, h, None);
     }
+    m
+}
+
+#[test]
+fn a_snapshot_taken_while_contacts_recycle_resumes_bit_identically() {
+    let mut world = PhysicsWorld::default();
+    world.insert_collider(
+        ColliderBuilder::cuboid(10.0, 0.5, 10.0).friction(MU_BA as f32),
+        None,
+    );
+    let m = stacks_on(&mut world, Vector::ZERO);
+    // After the snapshot the floor tilts past break-away: recycled contacts are hooked again
+    // in both runs, and the stacks slide.
+    let recycled = resumes_bit_identically(world, m, 120, 240, 60, |w| set_slope(w, 0.7));
+    assert!(recycled >= 60, "only {recycled} colliders recycled");
+}
+
+#[test]
+fn a_snapshot_taken_while_carried_contacts_recycle_resumes_bit_identically() {
+    let mut world = PhysicsWorld::default();
+    let v = Vector::new(0.0, 0.0, 0.5);
+    let platform = world.insert_body(RigidBodyBuilder::kinematic_velocity_based().linvel(v));
+    world.insert_collider(
+        ColliderBuilder::cuboid(10.0, 0.5, 200.0).friction(MU_BA as f32),
+        Some(platform),
+    );
+    let m = stacks_on(&mut world, v);
     // Saved while the stacks ride, then tilted past break-away.
     let recycled = resumes_bit_identically(world, m, 120, 240, 60, |w| set_slope(w, 0.7));
     assert!(recycled >= 60, "only {recycled} colliders recycled");
