@@ -438,6 +438,7 @@ fn steps_of_any_length_match_the_seed_ode_across_stiffness() {
             }
         }
     }
+    eprintln!("worst error {worst:e} of the band width");
     assert!(worst < 5e-2, "worst error {worst:e} of the band width");
 }
 
@@ -465,20 +466,22 @@ fn reference_2d(l: &ElastoPlastic, mu0: [f64; 2], e: [f64; 2], path: f64) -> [f6
 /// A slip that turns against the state (a sliding contact whose slip changes direction, a
 /// tumbling body) moves μ⃗ round the band, not along a line: one step from states on, inside
 /// and below the band, turned by 0–180° from the slip, over paths of a tenth to a hundred
-/// relaxation lengths μ_max/c, wide and narrow bands, stiffnesses 1e3–1e6, stays within 5 %
-/// of the band's width of the fine-step seed ODE in the plane (measured 4.1 %, at reversals;
-/// the straight sub-steps before erred by up to ten band widths on a narrow band).
+/// relaxation lengths μ_max/c, bands from 2 % to half of μ_max wide, stiffnesses 1e3–1e6,
+/// stays within 5 % of the band's width of the fine-step seed ODE in the plane. The straight
+/// sub-steps of earlier versions erred by up to ten band widths on a narrow band; the polar
+/// sub-steps with a backward-Euler radius by 7 % on the wide band (135°, one relaxation
+/// length), where the radius hardly contracts and their first-order errors add up.
 #[test]
 fn turned_slips_match_the_seed_ode_in_the_plane() {
     let mut worst = 0.0f64;
-    for (ba, max) in [(0.3, 0.35), (0.5, 0.51)] {
+    for (ba, max) in [(0.3, 0.35), (0.5, 0.51), (0.5, 0.55), (0.2, 0.4)] {
         let width = max - ba;
         for c in [1e3, 1e6] {
             let l = ElastoPlastic::new(c, ba, max, Curve::constant(max).unwrap()).unwrap();
-            for turn in [10.0f64, 60.0, 90.0, 135.0, 180.0] {
-                for r0 in [0.9 * ba, 0.5 * (ba + max), max - 1e-7] {
+            for turn in [10.0f64, 30.0, 60.0, 90.0, 135.0, 180.0] {
+                for r0 in [0.9 * ba, 0.5 * (ba + max), max - 0.02 * width, max - 1e-7] {
                     let mu0 = [r0 * turn.to_radians().cos(), r0 * turn.to_radians().sin()];
-                    for paths in [0.1, 1.0, 3.0, 10.0, 100.0] {
+                    for paths in [0.1, 0.3, 1.0, 1.5, 3.0, 10.0, 100.0] {
                         let slip = paths * max / c;
                         let f_n = 2.0;
                         let mut s = FrictionState::with_force(scale(mu0, f_n));

@@ -55,8 +55,9 @@
 //! dr/ds = c (cos φ − α(r) r/μ_ve) and dφ/ds = −(c/r) sin φ: the switch acts on the radius
 //! only, and the direction turns towards the slip whatever α is. A sub-step turns the
 //! direction exactly (for the radius frozen at the sub-step's mean) and takes the radius by
-//! backward Euler (one monotone scalar equation, Newton's method kept in its bracket). Its
-//! length keeps the radius's local error h²|r''|/2 under 1 % of the band's width, moves r by
+//! the implicit midpoint rule where the switch's pull is weak over the sub-step, blending into
+//! backward Euler where it is stiff (one monotone scalar equation either way, Newton's method
+//! kept in its bracket). Its length keeps h²|r''|/2 under 3 % of the band's width, moves r by
 //! at most a quarter band at its starting rate, and spans at most half a relaxation length of
 //! the switch and one of the turn. A slip that turns a sliding contact (a tumbling body, a
 //! contact that slides round a corner) is followed around the band in a few sub-steps: cut
@@ -91,14 +92,21 @@ const MAX_PIECES: usize = 48;
 /// Share of the band's width a sub-step may move |μ| by, at the radial rate it starts with.
 const RADIAL_SHARE: f64 = 0.25;
 
-/// Share of the band's width a sub-step's radius may err by locally (h² |r''| / 2).
-const LOCAL_ERROR: f64 = 0.01;
+/// Share of the band's width that h² |r''| / 2 (backward Euler's local error in the radius)
+/// may reach in a sub-step. The midpoint rule, which sub-steps take where the radius is not
+/// stiff, errs by an order of h less; there 1 % (the bound before) cost more sub-steps for no
+/// accuracy that tests/ep_law_properties.rs can see.
+const LOCAL_ERROR: f64 = 0.03;
 
 /// Relaxation lengths m/(c α) of the switch's pull a sub-step may span.
 const RELAXATION_SPAN: f64 = 0.5;
 
 /// Relaxation lengths r/c of the state's turn towards the slip a sub-step may span.
 const TURN_SPAN: f64 = 1.0;
+
+/// h J (J the radius's contraction rate per metre of slip) up to which a sub-step takes the
+/// implicit midpoint rule for its radius; backward Euler from twice that (`sub_step`).
+const MIDPOINT_SPAN: f64 = 1.0;
 
 /// 1 − α below which the switch counts as fully sliding (α = 1) in a step's pieces: the
 /// state then errs by at most ALPHA_FLAT · μ_ve (a millionth of the sliding level).
@@ -188,8 +196,41 @@ fn slide_exactly(mu: Vec2, e: Vec2, s: f64, c: f64, m: f64) -> (Vec2, f64) {
 /// one sine and cosine: α = (1 + sin x)/2, x = π (r − (lo + hi)/2)/(hi − lo).
 fn sine_blend(r: f64, lo: f64, hi: f64) -> (f64, f64) {
     let width = hi - lo;
-    let (sin, cos) = (std::f64::consts::PI * (r - 0.5 * (lo + hi)) / width).sin_cos();
+    let (sin, cos) = band_sin_cos(std::f64::consts::PI * (r - 0.5 * (lo + hi)) / width);
     (0.5 * sin + 0.5, 0.5 * std::f64::consts::PI * cos / width)
+}
+
+/// sin x and cos x for the band's |x| ≤ π/2 from the polynomial kernels of fdlibm (FreeBSD's
+/// `k_sin.c`, `k_cos.c`, accurate to about an ulp on |y| ≤ π/4) at y = x/2 and the double
+/// angle; libm's `sin_cos` elsewhere. The sub-steps' Newton iterations evaluate the blend
+/// three or four times each, and libm's general argument reduction was a sixth of a turning
+/// slide's step.
+fn band_sin_cos(x: f64) -> (f64, f64) {
+    if !(x.abs() <= std::f64::consts::FRAC_PI_2) {
+        return x.sin_cos();
+    }
+    let y = 0.5 * x;
+    let z = y * y;
+    let sin = y + y
+        * z
+        * (-1.666_666_666_666_663_2e-1
+            + z * (8.333_333_333_322_49e-3
+                + z * (-1.984_126_982_985_795e-4
+                    + z * (2.755_731_370_707_006_8e-6
+                        + z * (-2.505_076_025_340_686_3e-8 + z * 1.589_690_995_211_55e-10)))));
+    let cos = 1.0 - 0.5 * z
+        + z * z
+            * (4.166_666_666_666_6e-2
+                + z * (-1.388_888_888_887_411e-3
+                    + z * (2.480_158_728_947_673e-5
+                        + z * (-2.755_731_435_139_066_3e-7
+                            + z * (2.087_572_321_298_175e-9 + z * -1.135_964_755_778_819_5e-11)))));
+    // Kept in [−1, 1] and ≥ 0: α at the band's edges is then exactly 0 and 1, as libm gives
+    // (a switch of −1e-16 at the lower edge made the relaxation rule of the sub-steps negative).
+    (
+        (2.0 * sin * cos).clamp(-1.0, 1.0),
+        ((cos - sin) * (cos + sin)).max(0.0),
+    )
 }
 
 /// The root r ∈ [lo, hi] of the increasing g(r) = r (1 + k α(r; lo, hi)) − q, given
@@ -881,12 +922,19 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
     /// into dr/ds = c (cos φ − α(r) r/m) and dφ/ds = −(c/r) sin φ: the switch only acts on the
     /// radius, and the direction turns towards the slip whatever α is. The turn is taken
     /// exactly for a radius frozen at the sub-step's mean (tan(φ/2) decays as e^(−c s/r)),
-    /// the radius by backward Euler with the turned direction's cos φ₁:
-    /// r₁ (1 + h c α(r₁)/m) = r₀ + h c cos φ₁, the scalar equation of [`band_radius`]. Its
-    /// dissipation, work r₁ h cos φ₁ less the stored energy's change, is
-    /// h α₁ r₁²/m + (r₁ − r₀)²/(2c) ≥ 0 per unit normal force. A sliding state turned by the
-    /// slip follows the band around instead of being cut across it in a straight line, so a
-    /// turn costs a few sub-steps, not dozens of quarter-band ones.
+    /// the radius by the θ-method: r_θ = (1 − θ) r₀ + θ r₁ solves
+    /// r_θ (1 + θ h c α(r_θ)/m) = r₀ + θ h c cos φ_θ (the scalar equation of [`band_radius`]),
+    /// with cos φ_θ the direction turned over θ h. θ = ½ (the implicit midpoint rule, second
+    /// order) where the radius contracts weakly over the sub-step (h J ≤ [`MIDPOINT_SPAN`],
+    /// J = (c/m)(α + r α') at its start): there backward Euler's first-order errors add up
+    /// from sub-step to sub-step (a slip turned by 135° in a wide band erred by 7 % of its
+    /// width). θ rises to 1 (backward Euler, L-stable, for stiff sub-steps and the long last
+    /// one) by h J = 2 * MIDPOINT_SPAN, so the step is continuous in its state. r₁ is kept in
+    /// [min(r₀, L), max(r₀, U, m)], so |μ| stays bounded. The sub-step does the work
+    /// r_θ h cos φ_θ and dissipates h α_θ r_θ²/m + (2θ − 1)(r₁ − r₀)²/(2c) ≥ 0 per unit normal
+    /// force (less, where the bound on r₁ takes stored energy away). A sliding state turned by
+    /// the slip follows the band around instead of being cut across it in a straight line, so
+    /// a turn costs a few sub-steps, not dozens of quarter-band ones.
     #[allow(clippy::too_many_arguments)]
     fn sub_step(
         &self,
@@ -907,38 +955,57 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
         let cos0 = dot(d0, e).clamp(-1.0, 1.0);
         let (mut h, mut sigma1) = (h, self.sigma_after(sigma, r0, h, m, w_sigma));
         let (mut lo1, mut hi1) = self.band(sigma1, m);
-        let mut cos1 = dot(turned(d0, cos0, e, c * h / r0), e);
+        // (The turn only raises cos φ, so a state that starts turned towards the slip does not
+        // sink.)
+        let cos1 = if cos0 < 0.0 {
+            dot(turned(d0, cos0, e, c * h / r0), e)
+        } else {
+            cos0
+        };
         if r0 + h * c * cos1 < lo1 && r0 > lo1 && cos1 < 0.0 {
             // The state sinks out of the band within the sub-step: end it on the band's edge
             // (α = 0 there), where the exact elastic piece takes over.
             h = (lo1 - r0) / (c * cos1);
-            cos1 = dot(turned(d0, cos0, e, c * h / r0), e);
             sigma1 = self.sigma_after(sigma, r0, h, m, w_sigma);
             (lo1, hi1) = self.band(sigma1, m);
         }
-        let q = r0 + h * c * cos1;
+        // The radius's contraction over the sub-step, from (α, α') at its start.
+        let known = known
+            .filter(|(band, _)| *band == (lo1, hi1))
+            .map(|(_, b)| b);
+        let (a0, slope0) = known.unwrap_or_else(|| {
+            if r0 >= hi1 {
+                (1.0, 0.0)
+            } else if r0 <= lo1 {
+                (0.0, 0.0)
+            } else {
+                sine_blend(r0, lo1, hi1)
+            }
+        });
+        let contraction = h * c / m * (a0 + r0 * slope0);
+        let theta = (0.5 * contraction / MIDPOINT_SPAN).clamp(0.5, 1.0);
+        let cos_theta = dot(turned(d0, cos0, e, theta * c * h / r0), e);
+        let q = r0 + theta * h * c * cos_theta;
         if !(q > 0.0) {
             // Turned through the origin: the Cartesian form has no pole there.
             return self.backward_euler(mu, sigma, e, h, c, m, w_sigma);
         }
-        let k = h * c / m;
-        let r1 = if q <= lo1 {
+        let k = theta * h * c / m;
+        let r_theta = if q <= lo1 {
             q
         } else if q / (1.0 + k) >= hi1 {
             q / (1.0 + k)
         } else {
-            let known = known
-                .filter(|(band, _)| *band == (lo1, hi1))
-                .map(|(_, b)| b);
             band_radius(q, k, lo1, hi1, r0, known)
         };
+        let r1 = (r0 + (r_theta - r0) / theta).clamp(lo1.min(r0), hi1.max(m).max(r0));
         let d1 = turned(d0, cos0, e, 2.0 * c * h / (r0 + r1));
         let stored = (r1 * r1 - r0 * r0) / (2.0 * c);
         Piece {
             mu: scale(d1, r1),
             sigma: sigma1,
             used: h,
-            dissipated: (r1 * h * cos1 - stored).max(0.0),
+            dissipated: (r_theta * h * cos_theta - stored).max(0.0),
         }
     }
 
@@ -1102,6 +1169,18 @@ mod tests {
 
     fn law() -> ElastoPlastic {
         ElastoPlastic::new(1e4, 0.3, 0.4, Curve::constant(0.4).unwrap()).unwrap()
+    }
+
+    #[test]
+    fn the_band_sine_is_libms_to_round_off() {
+        let mut worst = 0.0f64;
+        for i in 0..=100_000 {
+            let x = std::f64::consts::PI * (i as f64 / 100_000.0 - 0.5);
+            let (s, c) = band_sin_cos(x);
+            worst = worst.max((s - x.sin()).abs()).max((c - x.cos()).abs());
+        }
+        assert!(worst < 4.0 * f64::EPSILON, "worst {worst:e}");
+        assert_eq!(band_sin_cos(3.0), 3.0f64.sin_cos());
     }
 
     #[test]
