@@ -76,12 +76,16 @@ mod key;
 mod measure;
 mod pair_law;
 mod plugin;
+pub mod prelude;
 mod report;
 mod store;
 
 pub use components::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
 pub use plugin::{StickSlipAvianPlugin, StickSlipAvianSystems};
 pub use report::{AvianContact, RegimeChanged, StickSlipContacts};
+/// The engine-free core (laws, sliding curves, vibration sources), so an app needs no second
+/// stickslip dependency.
+pub use stickslip_core as core;
 pub use stickslip_core::FrictionMaterial;
 pub use stickslip_core::contact::VibrationSource;
 pub use store::ContactStore;

@@ -46,6 +46,7 @@ mod components;
 #[cfg(feature = "debug")]
 pub mod debug;
 mod hooks;
+pub mod prelude;
 #[cfg(feature = "scenario")]
 pub mod scenario;
 mod state;
@@ -54,6 +55,10 @@ mod sync;
 
 pub use components::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
 pub use state::{EntityContact, RegimeChanged, StickSlipContacts, StickSlipRapier};
+/// The engine-free core (laws, sliding curves, vibration sources), so an app needs no second
+/// stickslip dependency.
+pub use stickslip_core as core;
+pub use stickslip_core::FrictionMaterial;
 
 use bevy::ecs::intern::Interned;
 use bevy::ecs::schedule::{ScheduleCleanupPolicy, ScheduleLabel};
@@ -62,7 +67,7 @@ use bevy::prelude::*;
 use bevy_rapier3d::plugin::systems::step_simulation;
 use bevy_rapier3d::prelude::*;
 use std::marker::PhantomData;
-use stickslip_rapier_035::{FrictionMaterial, StickSlip};
+use stickslip_rapier_035::StickSlip;
 
 /// Adds stickslip to a bevy_rapier app (see the crate docs). `H` is the app's
 /// `BevyPhysicsHooks` type, the one of its `RapierPhysicsPlugin::<H>` (`()` is bevy_rapier's

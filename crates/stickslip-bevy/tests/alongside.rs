@@ -123,7 +123,7 @@ fn sensors_groups_events_and_joints_work_beside_stickslip() {
         (held_at.x + 5.0).abs() < 1e-4,
         "held box moved to {held_at:?}"
     );
-    let mut state = app.world_mut().resource_mut::<StickSlipRapier>();
+    let state = app.world().resource::<StickSlipRapier>();
     // The box and the landed ball touch the attached floor: two records.
     assert_eq!(state.modifier.active_contacts(), 2);
 }

@@ -148,7 +148,7 @@ fn holds_below_break_away_in_every_mode() {
             x1 - x0
         );
         assert!((x1 - x0).abs() <= g_ba, "{mode:?}: moved {} m", x1 - x0);
-        let mut state = app.world_mut().resource_mut::<StickSlipRapier>();
+        let state = app.world_mut().resource_mut::<StickSlipRapier>();
         assert_eq!(state.modifier.active_contacts(), 1);
     }
 }
@@ -220,7 +220,7 @@ fn despawning_leaves_no_state() {
     );
     app.world_mut().despawn(b);
     steps(&mut app, 2);
-    let mut state = app.world_mut().resource_mut::<StickSlipRapier>();
+    let state = app.world_mut().resource_mut::<StickSlipRapier>();
     assert_eq!(
         state.modifier.active_contacts(),
         0,

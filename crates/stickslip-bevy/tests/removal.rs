@@ -51,7 +51,7 @@ fn removing_the_friction_component_detaches_both_sides() {
     let b = part(&mut app, 0.0, law);
     steps(&mut app, 10);
     {
-        let mut state = app.world_mut().resource_mut::<StickSlipRapier>();
+        let state = app.world().resource::<StickSlipRapier>();
         assert!(state.is_attached(g) && state.is_attached(b));
         assert_eq!(state.modifier.active_contacts(), 1);
     }
@@ -60,7 +60,7 @@ fn removing_the_friction_component_detaches_both_sides() {
         app.world_mut().entity_mut(e).remove::<StickSlipFriction>();
     }
     steps(&mut app, 3);
-    let mut state = app.world_mut().resource_mut::<StickSlipRapier>();
+    let state = app.world().resource::<StickSlipRapier>();
     assert!(!state.is_attached(g) && !state.is_attached(b));
     assert_eq!(state.attached_count(), 0);
     assert!(!state.modifier.is_attached(hg) && !state.modifier.is_attached(hb));
@@ -141,7 +141,7 @@ fn removals_between_fixed_ticks_are_not_missed() {
         app.world_mut().entity_mut(e).remove::<StickSlipFriction>();
     }
     steps(&mut app, 60);
-    let mut state = app.world_mut().resource_mut::<StickSlipRapier>();
+    let state = app.world().resource::<StickSlipRapier>();
     assert!(clock_moved(t, state.modifier.time()), "no fixed tick ran");
     assert_eq!(state.attached_count(), 0, "a removal was missed");
     assert!(!state.modifier.is_attached(hb));

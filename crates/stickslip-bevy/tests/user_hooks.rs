@@ -127,7 +127,7 @@ fn the_apps_own_hooks_work_beside_stickslip() {
         (at(&app, held).x + 20.0).abs() < 1e-4,
         "stickslip's box moved"
     );
-    let mut state = app.world_mut().resource_mut::<StickSlipRapier>();
+    let state = app.world_mut().resource_mut::<StickSlipRapier>();
     assert_eq!(state.modifier.active_contacts(), 1);
 }
 

@@ -1,4 +1,4 @@
-//! `stickslip figures`: every README figure as PNG and SVG, plus `figures.json`.
+//! `stickslip figures`: every figure of the user guide as PNG and SVG, plus `figures.json`.
 
 use crate::{CliError, output};
 use clap::Args;

@@ -35,7 +35,7 @@ enum Command {
     Block(block_cmd::BlockArgs),
     /// Run a scenario file headless; stream it to rerun (live viewer and/or .rrd file).
     Run(run_cmd::RunArgs),
-    /// Draw the README's figures (PNG and SVG) and write their checked data (figures.json).
+    /// Draw the user guide's figures (PNG and SVG) and write their checked data (figures.json).
     Figures(figures_cmd::FiguresArgs),
     /// Parameter sweeps over independent rapier worlds in parallel (CSV, JSON, heat maps).
     Sweep(sweep_cmd::SweepArgs),

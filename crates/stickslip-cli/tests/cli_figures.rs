@@ -1,4 +1,4 @@
-//! `stickslip figures --quick` end to end. Invariants: it writes every README figure as a PNG
+//! `stickslip figures --quick` end to end. Invariants: it writes every figure of the user guide as a PNG
 //! that decodes (the `image` crate) to its expected size and is not blank (many distinct
 //! pixels, a spread of brightness), an SVG beside each, and `figures.json`, whose
 //! rapier-measured points meet the physics tests' references: Popov μ̄ within 3 % of

@@ -3,8 +3,9 @@
 
 use thiserror::Error;
 
-/// Why a set of parameters was rejected.
+/// Why a set of parameters was rejected (more reasons may come: match with a `_` arm).
 #[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
 pub enum ParamError {
     /// A parameter is NaN or infinite.
     #[error("parameter `{name}` must be finite, got {}", num(*value))]
@@ -91,6 +92,7 @@ pub(crate) fn num(x: f64) -> String {
 }
 
 /// Checks that `value` is finite.
+#[doc(hidden)]
 pub fn finite(name: &'static str, value: f64) -> Result<f64, ParamError> {
     if value.is_finite() {
         Ok(value)
@@ -136,6 +138,7 @@ pub fn at_most(name: &'static str, value: f64, max: f64) -> Result<f64, ParamErr
 }
 
 /// Checks that `value` is finite and strictly positive.
+#[doc(hidden)]
 pub fn positive(name: &'static str, value: f64) -> Result<f64, ParamError> {
     finite(name, value)?;
     if value > 0.0 {
@@ -156,6 +159,7 @@ pub fn non_negative(name: &'static str, value: f64) -> Result<f64, ParamError> {
 }
 
 /// Checks that `value` is finite and inside `[min, max]`.
+#[doc(hidden)]
 pub fn in_range(name: &'static str, value: f64, min: f64, max: f64) -> Result<f64, ParamError> {
     finite(name, value)?;
     if (min..=max).contains(&value) {

@@ -34,6 +34,7 @@ mod integrate;
 pub mod law;
 pub mod material;
 pub mod popov;
+pub mod prelude;
 pub mod sliding_curve;
 pub mod switch;
 pub mod vec2;

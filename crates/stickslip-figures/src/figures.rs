@@ -1,4 +1,4 @@
-//! Every figure of the README in one call: data from [`crate::data`], drawn with
+//! Every figure of the user guide (docs/guide) in one call: data from [`crate::data`], drawn with
 //! [`crate::plot`] to `NAME.png` and `NAME.svg`, plus `figures.json` with the rapier-measured
 //! points beside their references (what the tests check).
 
@@ -13,7 +13,7 @@ use std::path::{Path, PathBuf};
 pub enum Size {
     /// CI size: coarse theory grids, two rapier points per curve, short runs.
     Quick,
-    /// The README's figures.
+    /// The user guide's figures.
     Full,
 }
 

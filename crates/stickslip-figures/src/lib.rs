@@ -4,7 +4,7 @@
 //!   theory and reference simulators and from real rapier worlds (`stickslip_rapier::scenes`).
 //! - [`plot`]: drawing those series with plotters to PNG and SVG (an embedded font,
 //!   [`font`], so the output is the same on every machine).
-//! - [`figures`]: every figure of the README in one call, [`figures::generate`].
+//! - [`figures`]: every figure of the user guide in one call, [`figures::generate`].
 //! - [`sweep`]: Popov maps (μ̄ over β × α per waveform) and vibratory-feeder maps (transport
 //!   speed over amplitude × frequency × throw angle), each point an independent world, run in
 //!   parallel on an explicit rayon pool, written as CSV, JSON and heat maps.

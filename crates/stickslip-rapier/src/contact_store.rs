@@ -630,30 +630,27 @@ impl ContactStore {
     }
 
     /// Number of live records.
-    pub fn len(&mut self) -> usize {
+    pub fn len(&self) -> usize {
         self.slots
-            .get_mut()
+            .read()
             .unwrap_or_else(|e| e.into_inner())
-            .iter_mut()
+            .iter()
             .filter(|s| s.0.lock().meta & LIVE != 0)
             .count()
     }
 
     /// Slots allocated (live or free).
-    pub fn capacity(&mut self) -> usize {
-        self.slots
-            .get_mut()
-            .unwrap_or_else(|e| e.into_inner())
-            .len()
+    pub fn capacity(&self) -> usize {
+        self.slots.read().unwrap_or_else(|e| e.into_inner()).len()
     }
 
     /// Heap bytes the store holds (slots, free list, key map, inner `user_data`), counting
     /// allocated capacity.
-    pub fn heap_bytes(&mut self) -> usize {
-        let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
-        let free = self.free.get_mut().unwrap_or_else(|e| e.into_inner());
-        let by_key = self.by_key.get_mut().unwrap_or_else(|e| e.into_inner());
-        let inner = self.inner_data.get_mut().unwrap_or_else(|e| e.into_inner());
+    pub fn heap_bytes(&self) -> usize {
+        let slots = self.slots.read().unwrap_or_else(|e| e.into_inner());
+        let free = self.free.lock().unwrap_or_else(|e| e.into_inner());
+        let by_key = self.by_key.lock().unwrap_or_else(|e| e.into_inner());
+        let inner = self.inner_data.lock().unwrap_or_else(|e| e.into_inner());
         // A hash map entry: key, value and one control byte.
         slots.capacity() * std::mem::size_of::<Slot>()
             + free.capacity() * 4
@@ -912,7 +909,6 @@ mod tests {
                 .collect();
             handles.into_iter().map(|h| h.join().unwrap()).collect()
         });
-        let mut store = store;
         assert_eq!(store.len(), keys.len(), "records");
         for ud in &seen[1..] {
             assert_eq!(ud, &seen[0], "threads got different records");
@@ -940,7 +936,7 @@ mod tests {
         }
         store.sweep(2);
         let image = store.image();
-        let mut back = ContactStore::from_image(&image).unwrap();
+        let back = ContactStore::from_image(&image).unwrap();
         assert_eq!(back.image(), image);
         assert_eq!(image.slots.iter().filter(|s| s.live.is_some()).count(), 2);
         assert_eq!(back.len(), 2);

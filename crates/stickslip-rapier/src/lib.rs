@@ -54,6 +54,7 @@ mod hook;
 mod measure;
 mod modifier;
 mod pair_law;
+pub mod prelude;
 mod quiet;
 mod rapier_compat;
 mod read_back;

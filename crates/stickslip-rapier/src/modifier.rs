@@ -139,6 +139,7 @@ pub enum ReadBack {
 
 /// Steps between two sweeps of the contact store when nothing is read back
 /// ([`ReadBack::Off`]): the state of a vanished contact lingers at most this many steps.
+#[doc(hidden)]
 pub const SWEEP_INTERVAL: u32 = 8;
 
 /// The stickslip contact modifier: implements rapier's [`PhysicsHooks`], replacing plain
@@ -796,22 +797,26 @@ impl<H> StickSlip<H> {
     }
 
     /// Number of contacts with friction state.
-    pub fn active_contacts(&mut self) -> usize {
+    pub fn active_contacts(&self) -> usize {
         self.store.len()
     }
 
     /// Bytes of friction state kept per active contact manifold (the per-contact record:
-    /// law state, stick anchors, bookkeeping).
+    /// law state, stick anchors, bookkeeping). A bench instrument, not API.
+    #[doc(hidden)]
     pub const STATE_BYTES_PER_CONTACT: usize = std::mem::size_of::<crate::contact_store::Slot>();
 
     /// Heap bytes of the contact state (slots, free list, key maps), capacity included; the
-    /// reports, when on, come on top.
-    pub fn state_heap_bytes(&mut self) -> usize {
+    /// reports, when on, come on top. A bench instrument, not API.
+    #[doc(hidden)]
+    pub fn state_heap_bytes(&self) -> usize {
         self.store.heap_bytes()
     }
 
-    /// Slots allocated for contact state (live or reusable): memory tracks this.
-    pub fn state_capacity(&mut self) -> usize {
+    /// Slots allocated for contact state (live or reusable): memory tracks this. A bench
+    /// instrument, not API.
+    #[doc(hidden)]
+    pub fn state_capacity(&self) -> usize {
         self.store.capacity()
     }
 }

@@ -23,6 +23,7 @@ use stickslip_core::FrictionMaterial;
 use stickslip_core::law::{CombineRule, Coulomb, FrictionLaw, Law};
 
 /// Most combined laws the cache keeps before it starts over.
+#[doc(hidden)]
 pub const MAX_COMBINATIONS: usize = 4096;
 
 /// One side of a pair, as far as its law is concerned.
@@ -38,6 +39,7 @@ pub(crate) enum Side {
 pub(crate) type CombineKey = (Side, Side, CombineRule);
 
 /// stickslip's rule for rapier's.
+#[doc(hidden)]
 pub fn combine_rule(rule: CoefficientCombineRule) -> CombineRule {
     match rule {
         CoefficientCombineRule::Average => CombineRule::Average,

@@ -11,8 +11,9 @@ pub const DIM: usize = 3;
 #[cfg(dim2)]
 pub const DIM: usize = 2;
 
-/// One contact manifold after a step.
+/// One contact manifold after a step (fields may be added: read them, do not build one).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[non_exhaustive]
 pub struct ContactReport {
     /// First collider of the pair.
     #[serde(skip)]

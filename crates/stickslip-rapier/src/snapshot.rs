@@ -91,8 +91,10 @@ pub const FORMAT_VERSION: u32 = 5;
 
 const MAGIC: [u8; 8] = *b"STKSLIP\0";
 /// Header kind of a [`StickSlipSnapshot`] file.
+#[doc(hidden)]
 pub const KIND_MODIFIER: u8 = 0;
 /// Header kind of a [`WorldSnapshot`] file.
+#[doc(hidden)]
 pub const KIND_WORLD: u8 = 1;
 
 /// Why a snapshot could not be written, read or restored.
@@ -1062,6 +1064,7 @@ impl WorldSnapshot {
 /// Writes `value` in the snapshot format with header kind `kind`: for bundles of your own
 /// around a world and a [`StickSlipSnapshot`] (e.g. a runner's counters beside them). Kinds
 /// [`KIND_MODIFIER`] and [`KIND_WORLD`] are this module's; pick another one.
+#[doc(hidden)]
 pub fn save_value<T: Serialize, W: Write>(
     writer: W,
     kind: u8,
@@ -1073,6 +1076,7 @@ pub fn save_value<T: Serialize, W: Write>(
 /// Reads a value written by [`save_value`] with the same `kind` (header checked, decoding
 /// errors and panics inside deserializers returned as errors, trailing bytes rejected).
 /// Validate what you read: [`StickSlip::restore`] does for the modifier's part.
+#[doc(hidden)]
 pub fn load_value<T: serde::de::DeserializeOwned, R: Read>(
     reader: R,
     kind: u8,

@@ -44,7 +44,7 @@ use std::path::Path;
 
 /// The built-in scenario's TOML (`scenarios/showcase.toml`: three inclined troughs — EP holding,
 /// EP conveying under ultrasonic vibration, plain rapier friction).
-pub const BUILTIN_TOML: &str = include_str!("../../../scenarios/showcase.toml");
+pub const BUILTIN_TOML: &str = include_str!("showcase.toml");
 
 impl Scenario {
     /// Parses and validates a scenario. `origin` names the source in errors.

@@ -8,6 +8,7 @@ use crate::law::Regime;
 /// [`super::step_contact`]).
 pub const REGIME_RESET: u8 = 254;
 /// Regime code of a contact the law has not run on yet.
+#[doc(hidden)]
 pub const REGIME_NONE: u8 = u8::MAX;
 
 impl Regime {

@@ -73,6 +73,7 @@ use crate::vec2::{self, Vec2};
 
 /// Relative margin below the imposed limit within which the solver's friction counts as
 /// saturated (the impulses are f32).
+#[doc(hidden)]
 pub const SATURATION: f64 = 1e-3;
 
 /// Beyond these a contact's inputs are garbage for an f32 solver, not physics: a force whose
@@ -89,6 +90,7 @@ const WARM: f64 = 0.9;
 const FORMING_STEPS: u8 = 2;
 
 /// `ContactState::forming` of a contact giving under a jump in load (see `step_contact`).
+#[doc(hidden)]
 pub const GIVING: u8 = 3;
 /// Share of the limit below which the friction a held contact carried makes a saturated
 /// solve after it a jump in load (see `step_contact`).

@@ -340,6 +340,58 @@ pub struct ElastoPlastic<C: SlidingCurve = Curve> {
     variant: EpVariant,
 }
 
+/// The elasto-plastic law's parameters by name, so a static coefficient and a sliding curve
+/// cannot be swapped silently (the positional [`ElastoPlastic::new`] and
+/// [`Law::elasto_plastic`](super::Law::elasto_plastic) take the same numbers). Validated by
+/// `try_from`:
+///
+/// ```
+/// use stickslip_core::law::{EpParams, FrictionLaw, Law};
+/// use stickslip_core::sliding_curve::Curve;
+/// // Sticks below 0.5 (over an elastic range of 0.5/1e4 = 50 µm), slides at 0.4.
+/// let law = Law::try_from(EpParams {
+///     stiffness: 1e4,
+///     static_coefficient: 0.5,
+///     peak_coefficient: 0.55,
+///     sliding: Curve::constant(0.4)?,
+/// })?;
+/// assert_eq!(law.static_coefficient(), 0.5);
+/// # Ok::<(), stickslip_core::ParamError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct EpParams<C: SlidingCurve = Curve> {
+    /// Contact stiffness c (1/m, per unit normal force): a contact sticks elastically over the
+    /// slip μ_ba/c before it breaks away.
+    pub stiffness: f64,
+    /// The break-away (static) coefficient μ_ba: below it the contact sticks (the seed's Eq. 2),
+    /// at it the contact breaks away (Eq. 3).
+    pub static_coefficient: f64,
+    /// The top of the stick-slip band μ_max ≥ μ_ba, where the switch α reaches 1 (Eq. 5–7);
+    /// equal to `static_coefficient` for a sharp switch.
+    pub peak_coefficient: f64,
+    /// The sliding curve μ_ve(|v|) (Eq. 1), e.g. [`Curve::constant`] or a Stribeck curve.
+    pub sliding: C,
+}
+
+impl<C: SlidingCurve> TryFrom<EpParams<C>> for ElastoPlastic<C> {
+    type Error = ParamError;
+    fn try_from(p: EpParams<C>) -> Result<Self, ParamError> {
+        ElastoPlastic::new(
+            p.stiffness,
+            p.static_coefficient,
+            p.peak_coefficient,
+            p.sliding,
+        )
+    }
+}
+
+impl TryFrom<EpParams> for super::Law {
+    type Error = ParamError;
+    fn try_from(p: EpParams) -> Result<Self, ParamError> {
+        ElastoPlastic::try_from(p).map(super::Law::ElastoPlastic)
+    }
+}
+
 /// Serialized form of [`ElastoPlastic`] (validated on deserialization).
 #[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]

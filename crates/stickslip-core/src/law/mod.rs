@@ -24,7 +24,7 @@ mod regularized;
 
 pub use crate::combine_rule::CombineRule;
 pub use coulomb::Coulomb;
-pub use elasto_plastic::{ElastoPlastic, EpVariant};
+pub use elasto_plastic::{ElastoPlastic, EpParams, EpVariant};
 pub use physical::Physical;
 pub use regularized::{Regularization, Regularized};
 

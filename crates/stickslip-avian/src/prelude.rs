@@ -1,0 +1,12 @@
+//! What an avian app names: `use stickslip_avian::prelude::*;`.
+pub use crate::{
+    AvianContact, RegimeChanged, StickSlipAvianPlugin, StickSlipContacts, StickSlipFriction,
+    StickSlipVibration, SurfaceVelocity,
+};
+// The core's prelude without `Curve`, which bevy's prelude names too (bevy_math's `Curve`):
+// name it as `core::sliding_curve::Curve`.
+pub use stickslip_core::prelude::{
+    Amplitude, ElastoPlastic, EpParams, FrictionLaw, FrictionMaterial, Law, ParamError, Regime,
+    StribeckDecay, VibrationComponent, VibrationDirection, VibrationMode, VibrationSource,
+    Waveform,
+};
