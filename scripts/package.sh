@@ -2,14 +2,14 @@
 # Packages every crate a user adds and builds each one from its .crate file alone:
 # `bash scripts/package.sh` from the repository root (.ci/run runs it).
 #
-# `cargo package` makes each package's .crate under $CARGO_TARGET_DIR/package, unpacks it there
-# and builds it, taking the other stickslip crates from the packages it has just made (a local
-# registry) and everything else from crates.io. So a published crate that depends on an
-# unpublished one, a path dependency without a version, or a source file outside its package
-# fails here. stickslip-rapier2d, stickslip-rapier-035 and stickslip-scenario-035 share their
-# sources with stickslip-rapier and stickslip-scenario through a `src` link, which `cargo
-# package` follows and copies in (the way rapier publishes rapier2d and rapier3d from one
-# source). Internal crates stay unpublished (`publish = false`) and out of this: stickslip-035
+# `cargo package` makes each package's .crate under $CARGO_TARGET_DIR/package-verify/package,
+# unpacks it there and builds it, taking the other stickslip crates from the packages it has
+# just made (a local registry) and everything else from crates.io. So a published crate that
+# depends on an unpublished one, a path dependency without a version, or a source file outside
+# its package fails here. stickslip-rapier2d, stickslip-rapier-035 and stickslip-scenario-035
+# share their sources with stickslip-rapier and stickslip-scenario through a `src` link, which
+# `cargo package` follows and copies in (the way rapier publishes rapier2d and rapier3d from
+# one source). Internal crates stay unpublished (`publish = false`) and out of this: stickslip-035
 # (the rapier tests against rapier 0.35) and stickslip-benches.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,16 +22,22 @@ profiles=$(mktemp --suffix .toml)
 trap 'rm -f "$profiles"' EXIT
 sed -n '/^\[profile\./,$p' Cargo.toml > "$profiles"
 
-# cargo unpacks the packages it verifies into its registry cache (a directory named for the
-# local registry, under $CARGO_HOME/registry/src) and never unpacks a name and version it has
-# there already: a second run would build the first run's sources. Remove them.
+# The packages build in a target dir of their own beside the workspace's, kept between runs
+# for their dependencies. cargo takes a crate from a registry to be immutable: it never
+# unpacks a name and version again that its registry cache (a directory named for the local
+# registry under $CARGO_HOME/registry/src) already has, and never rebuilds one whose artifacts
+# it has. Both would make a second run verify the first run's sources, so both go.
+target="$CARGO_TARGET_DIR/package-verify"
 cargo_home="${CARGO_HOME:-$HOME/.cargo}"
 for d in "$cargo_home"/registry/src/-*/; do
     rm -rf "$d"stickslip*
 done
+rm -rf "$target"/package "$target"/debug/.fingerprint/stickslip* "$target"/debug/build/stickslip* \
+    "$target"/debug/deps/*stickslip*
 
 # --allow-dirty: a local run packages the working tree as it is (CI packages a clean clone).
 # (The profiles name dependencies of every crate; each package warns about the others'.)
 cargo package --workspace --exclude stickslip-035 --exclude stickslip-benches \
-    --allow-dirty --config "$profiles" 2>&1 | grep -v "^warning: profile package spec"
-ls -l "$CARGO_TARGET_DIR"/package/*.crate
+    --allow-dirty --config "$profiles" --target-dir "$target" 2>&1 |
+    grep -v "^warning: profile package spec"
+ls -l "$target"/package/*.crate
