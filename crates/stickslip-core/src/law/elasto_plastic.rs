@@ -72,11 +72,13 @@
 //! dissipation is within 1 % of the continuous law's; |μ| stays bounded and every step
 //! dissipates ≥ 0. The closed-form pieces are checked alone against RK4 (unit tests here: the
 //! aligned climb within 0.5 % of the band's width and 1 % in dissipation, the sharp-band
-//! slide within 3 ε U of a band of width ε U). The radius's backward Euler
-//! is L-stable and keeps |μ| ≤ max(|μ₀|, μ_max, μ_ve) for any c and step; a sub-step does the
-//! work r₁ h cos φ₁ per unit normal force and dissipates
-//! F_n [h α₁ r₁²/μ_ve + (r₁ − r₀)²/(2c)] ≥ 0, so every step dissipates ≥ 0 by construction and
-//! the reported dissipation is the work the step's forces do minus the change of stored energy.
+//! slide within 3 ε U of a band of width ε U). The radius's θ-method (θ ∈ [½, 1], backward
+//! Euler for stiff and long sub-steps, so L-stable where it matters) keeps its end radius in
+//! [min(r₀, L), max(r₀, U, μ_ve)], so |μ| ≤ max(|μ₀|, μ_max, μ_ve) for any c and step; a
+//! sub-step does the work r_θ h cos φ_θ per unit normal force and dissipates
+//! F_n [h α_θ r_θ²/μ_ve + (2θ − 1)(r₁ − r₀)²/(2c)] ≥ 0, so every step dissipates ≥ 0 by
+//! construction and the reported dissipation is the work the step's forces do minus the change
+//! of stored energy.
 
 use super::{FrictionLaw, FrictionState, StepInput, StepOutput, unloaded};
 use crate::error::{MAX_STIFFNESS, MIN_STIFFNESS, ParamError, coefficient, in_range, positive};
