@@ -10,7 +10,7 @@
 # mode) and once for the tests, examples and benches (the test profile); only the `parallel`
 # pass rebuilds what rapier's multi-threaded feature changes (rapier, parry and stickslip's
 # rapier crates). Every command passes `--workspace` (or `--workspace --exclude
-# stickslip-035`, which resolves the same features) and picks its targets with `--test`,
+# stickslip-fixtures-035`, which resolves the same features) and picks its targets with `--test`,
 # `--example`, `--bin` or `--bench`.
 #
 # cargo's `resolver.feature-unification = "workspace"` would do this for `-p`, but it is
@@ -19,7 +19,7 @@
 # Features of the default selection.
 STICKSLIP_FEATURES="stickslip-bevy/window,stickslip-bevy/scenario,stickslip-bevy/debug,stickslip-avian/window,stickslip-avian/debug"
 # The same with rapier's multi-threaded narrow phase and solver in the 3D and 2D adapters.
-STICKSLIP_PARALLEL_FEATURES="$STICKSLIP_FEATURES,stickslip/parallel,stickslip-rapier2d/parallel"
+STICKSLIP_PARALLEL_FEATURES="$STICKSLIP_FEATURES,stickslip/parallel,stickslip-fixtures/parallel,stickslip-rapier2d/parallel"
 export STICKSLIP_FEATURES STICKSLIP_PARALLEL_FEATURES
 
 export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$HOME/.cache/stickslip-target}"

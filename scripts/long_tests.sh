@@ -11,7 +11,7 @@ SEED="${PROPTEST_RNG_SEED:-$(od -An -N8 -tu8 /dev/urandom | tr -d ' ')}"
 echo "property tests: $CASES cases, seed $SEED"
 export PROPTEST_CASES="$CASES" PROPTEST_RNG_SEED="$SEED"
 cargo test --release -p stickslip --test ep_law_properties
-cargo test --release -p stickslip-core --test popov_theory
+cargo test --release -p stickslip-theory --test popov_theory
 # The fuzz suites (nothing crashes, hangs or lies): parameters, running worlds, scenario
 # files, command lines.
 cargo test --release -p stickslip --test fuzz_parameters --test fuzz_world_states

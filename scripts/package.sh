@@ -9,8 +9,10 @@
 # its package fails here. stickslip-rapier2d, stickslip-rapier-035 and stickslip-scenario-035
 # share their sources with stickslip-rapier and stickslip-scenario through a `src` link, which
 # `cargo package` follows and copies in (the way rapier publishes rapier2d and rapier3d from
-# one source). Internal crates stay unpublished (`publish = false`) and out of this: stickslip-035
-# (the rapier tests against rapier 0.35) and stickslip-benches.
+# one source). Internal crates stay unpublished (`publish = false`) and out of this:
+# stickslip-fixtures and stickslip-fixtures-035 (the reference scenes and the rapier tests, on
+# rapier 0.36 and 0.35) and stickslip-benches; nothing published depends on them (a path-only
+# dev-dependency is dropped from the package).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/cargo_selection.sh
@@ -37,7 +39,8 @@ rm -rf "$target"/package "$target"/debug/.fingerprint/stickslip* "$target"/debug
 
 # --allow-dirty: a local run packages the working tree as it is (CI packages a clean clone).
 # (The profiles name dependencies of every crate; each package warns about the others'.)
-cargo package --workspace --exclude stickslip-035 --exclude stickslip-benches \
+cargo package --workspace --exclude stickslip-fixtures --exclude stickslip-fixtures-035 \
+    --exclude stickslip-benches \
     --allow-dirty --config "$profiles" --target-dir "$target" 2>&1 |
     grep -v "^warning: profile package spec"
 ls -l "$target"/package/*.crate

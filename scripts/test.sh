@@ -30,14 +30,15 @@ install_rerun_cli
 # Every test of the workspace, the bevy add-ons with their optional parts (contact gizmos,
 # scenario files as bevy_rapier entities; the windowed examples are built here and run by
 # scripts/bevy_screenshot.sh in .ci/run). The workspace includes stickslip-rapier-035 and
-# stickslip-035: stickslip-rapier's sources and the rapier test files (tests/rapier_*.rs,
-# tests/ordinary_*.rs) built against rapier3d 0.35.0-glamx0.2, the rapier bevy_rapier3d 0.36
-# pins, besides 0.36.1.
+# stickslip-fixtures-035: stickslip-rapier's sources and the rapier test suite
+# (crates/stickslip-fixtures/tests) built against rapier3d 0.35.0-glamx0.2, the rapier
+# bevy_rapier3d 0.36 pins, besides 0.36.1.
 # (STICKSLIP_TIMINGS=--timings writes cargo's per-crate timing report; .ci/run sets it.)
 cargo test --workspace --features "$STICKSLIP_FEATURES" ${STICKSLIP_TIMINGS:-}
 # The rapier tests that exercise the hook on several threads, once more with rapier's
-# multi-threaded `parallel` feature, 3D (tests/) and 2D (crates/stickslip-rapier2d/tests/).
-cargo test --workspace --exclude stickslip-035 --features "$STICKSLIP_PARALLEL_FEATURES" \
+# multi-threaded `parallel` feature, 3D (crates/stickslip-fixtures/tests/) and 2D
+# (crates/stickslip-rapier2d/tests/).
+cargo test --workspace --exclude stickslip-fixtures-035 --features "$STICKSLIP_PARALLEL_FEATURES" \
     --test rapier_many_contacts --test rapier_popov --test rapier_snapshot --test rapier_drive \
     --test shared_world --test rapier_recycling --test rapier_load_jump \
     --test rapier2d_snapshot --test rapier2d_shared_world --test rapier2d_stacks

@@ -8,12 +8,12 @@
 //! static 0.5 / kinetic 0.3 stick-slips with the analytic period
 //! T = 2Δ/v_b + (π + 2 atan(v_b/(ωΔ)))/ω within 2 %.
 
-use stickslip::core::block::{BeltSpring, Block, ForceProfile, Integrator, Tolerances, simulate};
 use stickslip::core::law::{
     ElastoPlastic, EpVariant, FrictionLaw, FrictionState, Law, Physical, StepInput,
 };
 use stickslip::core::sliding_curve::{Curve, SlidingCurve, StribeckDecay};
 use stickslip::core::vec2::norm;
+use stickslip_theory::block::{BeltSpring, Block, ForceProfile, Integrator, Tolerances, simulate};
 
 /// The issue's curve: μ_ve = 0.3 + 0.25 e^(−|v|/0.05), with μ_ba = 0.5 and μ_max = μ_ve(0+).
 fn issue_curve() -> Curve {
@@ -98,7 +98,7 @@ fn the_literal_law_settles_inside_the_band_as_documented() {
 const M: f64 = 1.0;
 const G: f64 = 9.81;
 
-fn block_run(law: Law, integrator: Integrator) -> stickslip::core::block::BlockRun {
+fn block_run(law: Law, integrator: Integrator) -> stickslip_theory::block::BlockRun {
     // Example 1's shape: 0.95 F_ba held in phase I, a push to 1.3 F_ba (above the curve's
     // μ_ve(0+) = 0.55, where the switched model releases) in phase II, the force removed at
     // 1.6 s so that the block slides back to rest well before 3 s (phase III).

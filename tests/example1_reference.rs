@@ -6,9 +6,9 @@
 //! matches the closed-form sliding solution of a constant-force arc; and every law's output is
 //! a trajectory: times never go back, the switched model never past its stop.
 
-use stickslip::core::block::{Block, ForceProfile, Integrator, Tolerances, simulate};
 use stickslip::core::law::{Coulomb, Law, Physical, Regularization, Regularized};
 use stickslip::core::sliding_curve::Curve;
+use stickslip_theory::block::{Block, ForceProfile, Integrator, Tolerances, simulate};
 
 const M: f64 = 1.0;
 const G: f64 = 9.81;
@@ -24,7 +24,7 @@ fn profile() -> ForceProfile {
     ForceProfile::example1(MU_BA * M * G, 0.95, 1.5).unwrap()
 }
 
-fn run(law: Law, integrator: Integrator) -> stickslip::core::block::BlockRun {
+fn run(law: Law, integrator: Integrator) -> stickslip_theory::block::BlockRun {
     let block = Block::new(M, G, law).unwrap();
     simulate(
         &block,

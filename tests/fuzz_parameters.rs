@@ -14,10 +14,10 @@ use stickslip::core::ParamError;
 use stickslip::core::law::{Law, Physical, Regularization, Regularized};
 use stickslip::core::sliding_curve::{Curve, StribeckDecay};
 use stickslip::core::waveform::Waveform;
-use stickslip::rapier::scenes::BoxOnGround;
 use stickslip::rapier::{
     Amplitude, FrictionMaterial, StickSlip, VibrationDirection, VibrationMode, VibrationSource,
 };
+use stickslip_fixtures::BoxOnGround;
 use support::deterministic;
 
 /// A number a user might pass: mostly plausible (±3 decades around `typical`), sometimes

@@ -247,9 +247,9 @@ fn dominoes(
     ground
 }
 
-/// The tower of `scenes::ordinary::stack(Stack::Keva, 3, ..)` on level ground: 444 planks.
+/// The tower of `stickslip_fixtures::ordinary::stack(Stack::Keva, 3, ..)` on level ground: 444 planks.
 fn keva(world: &mut PhysicsWorld, hooked: &mut Vec<ColliderHandle>) -> ColliderHandle {
-    use stickslip::rapier::scenes::ordinary::{Stack, stack};
+    use stickslip_fixtures::ordinary::{Stack, stack};
     let scene = stack(Stack::Keva, 3, 0.0, MU, 1.0 / 60.0);
     *world = scene.world;
     hooked.extend(world.colliders.iter().map(|(h, _)| h));

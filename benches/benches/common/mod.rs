@@ -11,7 +11,7 @@
 //! - `trough`: a kinematic vibratory trough (25 Hz, 1.5 mm along a 25° throw direction,
 //!   machine number ≈ 1.6, parts hop) carrying 480 small parts, dt = 1/500 s;
 //! - `towers_<n>`: plank towers, the stacking demo of every engine: a 3 × 3 grid of towers of
-//!   12 crossed layers of four 1.6 m planks (the tower of `scenes::ordinary::stack`, tall
+//!   12 crossed layers of four 1.6 m planks (the tower of `stickslip_fixtures::ordinary::stack`, tall
 //!   enough to stand still in plain rapier), n planks, dt = 1/60 s;
 //! - `rolling_<n>`: n balls (r 0.1 m) rolling without slipping across a fixed ground at 1 m/s,
 //!   dt = 1/60 s.
@@ -75,7 +75,7 @@ pub enum Scene {
     Platforms { boxes: usize },
     /// `count` dominoes in rows of 100, the first of each row pushed.
     Dominoes { count: usize },
-    /// The 444-plank tower of `scenes::ordinary::stack(Stack::Keva, 3, ..)` (rapier's `keva3`
+    /// The 444-plank tower of `stickslip_fixtures::ordinary::stack(Stack::Keva, 3, ..)` (rapier's `keva3`
     /// layout, three blocks).
     Keva,
 }
@@ -458,7 +458,7 @@ impl Bench {
                 );
                 hooked.push(ground);
                 vib_host = ground;
-                // The tower of `scenes::ordinary::stack(Stack::Tower, ..)`, 2.5 m apart.
+                // The tower of `stickslip_fixtures::ordinary::stack(Stack::Tower, ..)`, 2.5 m apart.
                 let (long, thick, wide) = (0.8f32, 0.05f32, 0.1f32);
                 for t in 0..grid * grid {
                     let centre = Vector::new(

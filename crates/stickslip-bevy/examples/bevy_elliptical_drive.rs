@@ -24,9 +24,13 @@ use bevy_rapier3d::prelude::*;
 use std::time::Duration;
 use stickslip_bevy::{StickSlipFriction, StickSlipRapierPlugin, StickSlipVibration};
 use stickslip_core::law::Law;
+use stickslip_core::popov::{CompliantContact, Oscillation, free_drive_velocity};
 use stickslip_core::sliding_curve::Curve;
-use stickslip_rapier_035::scenes::VibratingPlate;
-use stickslip_rapier_035::{FrictionMaterial, VibrationMode, VibrationSource};
+use stickslip_core::waveform::Waveform;
+use stickslip_rapier_035::{
+    Amplitude, FrictionMaterial, VibrationComponent, VibrationDirection, VibrationMode,
+    VibrationSource,
+};
 
 const MU0: f64 = 0.5;
 const C: f64 = 1e4;
@@ -43,15 +47,44 @@ const HALF: f32 = 0.06;
 
 /// The source of a plate and the theory's drive velocity along x (m/s).
 fn source(shift: f64) -> (VibrationSource, f64) {
-    let mut plate = VibratingPlate::elliptical(ALPHA, TANGENTIAL, shift, VibrationMode::Averaged)
-        .expect("valid vibration");
-    plate.mu0 = MU0;
-    plate.c = C;
-    plate.frequency = FREQUENCY;
-    let v = plate.theory_drive_velocity().unwrap_or(f64::NAN);
-    let src = VibrationSource::superimposed(&plate.components, FREQUENCY, VibrationMode::Averaged)
+    let components = [
+        VibrationComponent::new(
+            VibrationDirection::Normal,
+            Amplitude::Ratio(ALPHA),
+            Waveform::Sine,
+            0.0,
+        ),
+        VibrationComponent::new(
+            VibrationDirection::Tangential {
+                axis: [1.0, 0.0, 0.0],
+            },
+            Amplitude::Ratio(TANGENTIAL),
+            Waveform::Sine,
+            shift,
+        ),
+    ]
+    .into_iter()
+    .collect::<Result<Vec<_>, _>>()
+    .expect("valid components");
+    let src = VibrationSource::superimposed(&components, FREQUENCY, VibrationMode::Averaged)
         .expect("valid source");
-    (src, v)
+    (src.clone(), theory_velocity(&src).unwrap_or(f64::NAN))
+}
+
+/// Popov's compliant contact under the source: the law's sharp limit (μ_ba = μ_max = μ0) of
+/// stiffness C is the contact k_x = C F̄, k_z = F̄ at ū_z = 1 (F̄ cancels; take 1), whose
+/// in-plane amplitudes are slip lengths μ0/C. The plate drives the part's base by −A w, so the
+/// part moves at minus the theory's free drive velocity.
+fn theory_velocity(src: &VibrationSource) -> Result<f64, stickslip_core::ParamError> {
+    let mut ex = src.excitation(MU0, 1.0)?;
+    for o in [&mut ex.tangential, &mut ex.transverse]
+        .into_iter()
+        .flatten()
+    {
+        *o = Oscillation::new(o.amplitude() * MU0 / C, o.waveform().clone(), o.phase())?;
+    }
+    let contact = CompliantContact::new(C, 1.0, MU0, 1.0)?;
+    Ok(-free_drive_velocity(&contact, &ex, FREQUENCY)?.unwrap_or(0.0))
 }
 
 #[derive(Component)]

@@ -10,7 +10,7 @@
 //!    shows their measured transport speed beside that speed of the theory.
 //! 3. **A classic vibratory feeder**: a horizontal kinematic trough vibrating 3 mm at 15 Hz
 //!    along a 30° throw angle (throw number Γ = 1.36 > 1): the parts hop forward. The HUD
-//!    shows the point-mass reference of `stickslip_core::feeder` beside the measured speed.
+//!    shows the point-mass reference of `stickslip_theory::feeder` beside the measured speed.
 //!
 //! Like with like: a part's speed counts from the end of its start-up transient to now (on
 //! lane 3 over whole drive periods), over parts that have not been restarted since; the HUD
@@ -50,7 +50,6 @@ use stickslip_bevy::{
     StickSlipContacts, StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin,
     StickSlipVibration,
 };
-use stickslip_core::feeder::VibratoryFeeder;
 use stickslip_core::law::{Law, Regime};
 use stickslip_core::popov;
 use stickslip_core::sliding_curve::Curve;
@@ -58,6 +57,7 @@ use stickslip_core::waveform::Waveform;
 use stickslip_rapier_035::{
     Amplitude, FrictionMaterial, VibrationDirection, VibrationMode, VibrationSource,
 };
+use stickslip_theory::feeder::VibratoryFeeder;
 
 /// Slope tan θ of lanes 1 and 2.
 const SLOPE: f64 = 0.3;

@@ -12,7 +12,7 @@ use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
 use common::*;
 use stickslip_bevy::StickSlipVibration;
-use stickslip_rapier_035::scenes::VibratingPlate;
+use stickslip_fixtures::VibratingPlate;
 use stickslip_rapier_035::{VibrationMode, VibrationSource};
 
 const MU0: f64 = 0.5;

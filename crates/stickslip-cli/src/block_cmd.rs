@@ -3,10 +3,10 @@
 use crate::{CliError, output};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
-use stickslip_core::block::{Block, BlockRun, ForceProfile, Integrator, Tolerances, simulate};
 use stickslip_core::error::in_range;
 use stickslip_core::law::{Coulomb, Law, Physical, Regularization, Regularized};
 use stickslip_core::sliding_curve::{Curve, StribeckDecay};
+use stickslip_theory::block::{Block, BlockRun, ForceProfile, Integrator, Tolerances, simulate};
 
 /// Which law the block's contact uses.
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -100,12 +100,12 @@ pub struct BlockArgs {
 struct Report<'a> {
     law: &'a str,
     integrator: Integrator,
-    phases: &'a [stickslip_core::block::PhaseSummary],
+    phases: &'a [stickslip_theory::block::PhaseSummary],
     final_displacement: f64,
     stick_time: f64,
     slip_time: f64,
     break_away_displacement: Option<f64>,
-    stats: stickslip_core::block::RunStats,
+    stats: stickslip_theory::block::RunStats,
 }
 
 fn curve(args: &BlockArgs) -> Result<Curve, CliError> {

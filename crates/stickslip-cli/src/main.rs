@@ -52,7 +52,7 @@ pub enum CliError {
     Argument(String),
     /// The simulation failed.
     #[error("simulation failed: {0}")]
-    Sim(#[from] stickslip_core::block::SimError),
+    Sim(#[from] stickslip_theory::block::SimError),
     /// Writing output failed.
     #[error("output failed: {0}")]
     Output(#[from] serde_json::Error),

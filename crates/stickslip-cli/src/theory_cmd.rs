@@ -3,8 +3,8 @@
 use crate::{CliError, output};
 use clap::{Args, Subcommand, ValueEnum};
 use serde::Serialize;
-use stickslip_core::popov;
 use stickslip_core::waveform::{Waveform, WaveformKind};
+use stickslip_theory::popov;
 
 /// Arguments of `stickslip theory`.
 #[derive(Debug, Args)]

@@ -2,12 +2,12 @@
 //! that decodes (the `image` crate) to its expected size and is not blank (many distinct
 //! pixels, a spread of brightness), an SVG beside each, and `figures.json`, whose
 //! rapier-measured points meet the physics tests' references: Popov μ̄ within 3 % of
-//! μ0 (1 − α Ψ_w(β)) (`tests/rapier_popov.rs`), the feeder's plain-rapier speed at 1/30 000 s
+//! μ0 (1 − α Ψ_w(β)) (`crates/stickslip-fixtures/tests/rapier_popov.rs`), the feeder's plain-rapier speed at 1/30 000 s
 //! within 3 % of the rigid-body reference and EP within 3 % of plain rapier at 1/3000 s
-//! (`tests/rapier_feeder.rs`), on the incline EP within g_ba and Regul creeping at
-//! ġ_t0 tan θ/μ_ve within 2 % (`tests/rapier_incline.rs`), and Example 1 in rapier with EP
+//! (`crates/stickslip-fixtures/tests/rapier_feeder.rs`), on the incline EP within g_ba and Regul creeping at
+//! ġ_t0 tan θ/μ_ve within 2 % (`crates/stickslip-fixtures/tests/rapier_incline.rs`), and Example 1 in rapier with EP
 //! sticking within g_ba in phase I and ending within 2 % of the core's Phys
-//! (`tests/rapier_example1.rs`). A directory that cannot be created is a clear error.
+//! (`crates/stickslip-fixtures/tests/rapier_example1.rs`). A directory that cannot be created is a clear error.
 
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -80,7 +80,7 @@ fn quick_figures_are_valid_pngs_and_their_rapier_points_meet_the_references() {
     let j: Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("figures.json")).unwrap()).unwrap();
 
-    // Popov Fig. 4 points (tests/rapier_popov.rs: 3 %).
+    // Popov Fig. 4 points (crates/stickslip-fixtures/tests/rapier_popov.rs: 3 %).
     let mut worst: f64 = 0.0;
     let mut n = 0;
     for curve in j["popov"].as_array().unwrap() {
@@ -94,7 +94,7 @@ fn quick_figures_are_valid_pngs_and_their_rapier_points_meet_the_references() {
     assert_eq!(n, 8, "two points per waveform");
     println!("popov: {n} points, worst {:.2} %", 100.0 * worst);
 
-    // Feeder (tests/rapier_feeder.rs: plain at 1/30000 s vs reference, EP vs plain, 3 %).
+    // Feeder (crates/stickslip-fixtures/tests/rapier_feeder.rs: plain at 1/30000 s vs reference, EP vs plain, 3 %).
     let feeder = j["feeder"].as_array().unwrap();
     assert_eq!(feeder.len(), 2);
     for p in feeder {
@@ -113,7 +113,7 @@ fn quick_figures_are_valid_pngs_and_their_rapier_points_meet_the_references() {
         assert!(((ep - coarse) / coarse).abs() < 0.03, "{p}");
     }
 
-    // Incline (tests/rapier_incline.rs).
+    // Incline (crates/stickslip-fixtures/tests/rapier_incline.rs).
     let secs = f(&j["incline_seconds"]);
     let g_ba = 0.5 / 1e4;
     for m in j["incline"].as_array().unwrap() {
@@ -133,7 +133,7 @@ fn quick_figures_are_valid_pngs_and_their_rapier_points_meet_the_references() {
         }
     }
 
-    // Example 1 (tests/rapier_example1.rs).
+    // Example 1 (crates/stickslip-fixtures/tests/rapier_example1.rs).
     let ex = j["example1"].as_array().unwrap();
     let phys = ex.iter().find(|e| e[0] == "Phys").unwrap();
     let ep = ex.iter().find(|e| e[0] == "EP").unwrap();

@@ -1,8 +1,8 @@
 //! `stickslip sweep` end to end. Invariants: a sweep's numbers (CSV and JSON) are bit-for-bit
 //! the same on 1 and on 2 worker threads (every point is its own world); a small Popov sweep
 //! measured in rapier meets the theory μ0 (1 − α Ψ_w(β)) within the physics tests' 3 %
-//! (`tests/rapier_popov.rs`) and a small feeder sweep with plain rapier at 1/30 000 s meets
-//! the rigid-body reference within 3 % (`tests/rapier_feeder.rs`); both write a heat-map PNG
+//! (`crates/stickslip-fixtures/tests/rapier_popov.rs`) and a small feeder sweep with plain rapier at 1/30 000 s meets
+//! the rigid-body reference within 3 % (`crates/stickslip-fixtures/tests/rapier_feeder.rs`); both write a heat-map PNG
 //! of the expected size; bad ranges and options exit with code 2 and a message naming the
 //! option, never a panic and never a huge allocation.
 

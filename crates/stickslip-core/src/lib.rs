@@ -7,34 +7,26 @@
 //!   behind one [`law::FrictionLaw`] interface that a physics engine calls once per step.
 //! - [`sliding_curve`]: the sliding curve μ_ve(|v|) (constant, Stribeck, table).
 //! - [`switch`]: the sine-blended switch α(μ) of Eq. 5–7.
-//! - [`waveform`] and [`popov`]: normalized vibration waveforms and Popov's (2020) theory of
-//!   friction under normal, tangential and transverse oscillation (Ψ_w(β), μ̄, static
-//!   coefficients) plus a time-stepped reference simulator of his spring model.
-//! - [`feeder`]: a rigid-body reference for vibratory feeders (point mass, exact ballistic
-//!   flight, plastic landing with Coulomb impact friction).
-//! - [`block`]: the seed's Example 1, a block under a time-dependent force: its force profile,
-//!   and (feature `reference`) its simulation with adaptive explicit and implicit ODE methods
-//!   from `differential-equations`, which builds without the feature do not carry.
+//! - [`waveform`] and [`popov`]: normalized vibration waveforms and the part of Popov's (2020)
+//!   theory of friction under oscillation that the averaged vibration mode evaluates at run
+//!   time (Ψ_w(β), the compliant contact's μ̄ and static band, its self-drive).
+//! - [`contact`]: the per-contact kernel every engine adapter calls, and the vibration sources.
+//! - [`profile`]: validated piecewise-linear force profiles F(t), such as the seed's Example 1.
+//!
+//! The reference simulators and the rest of Popov's theory (static friction, spring model,
+//! the seed's block and chain, a vibratory feeder) are in the `stickslip-theory` crate.
 #![warn(missing_docs)]
 // `!(x > 0.0)` is deliberate throughout: it rejects NaN along with non-positive values.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-pub mod block;
-/// The seed's many-contact reference (a chain of blocks), used by the benchmarks only: behind
-/// the `reference` feature, outside the default public surface.
-#[cfg(feature = "reference")]
-#[doc(hidden)]
-pub mod chain;
 mod combine_rule;
 pub mod contact;
 pub mod error;
-pub mod feeder;
-#[cfg(feature = "reference")]
-mod integrate;
 pub mod law;
 pub mod material;
 pub mod popov;
 pub mod prelude;
+pub mod profile;
 pub mod sliding_curve;
 pub mod switch;
 pub mod vec2;

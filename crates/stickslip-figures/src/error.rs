@@ -11,7 +11,7 @@ pub enum FigureError {
     Param(#[from] stickslip_core::ParamError),
     /// A reference simulation failed.
     #[error("simulation failed: {0}")]
-    Sim(#[from] stickslip_core::block::SimError),
+    Sim(#[from] stickslip_theory::block::SimError),
     /// A range `LO:HI:N` is malformed or out of its domain.
     #[error("invalid range `{text}` for {name}: {reason}")]
     Range {

@@ -60,11 +60,6 @@ mod rapier_compat;
 mod read_back;
 mod recycle;
 mod report;
-// Reference scenes of the workspace's tests, figures, examples and benchmarks: fixtures
-// behind the `scenes` feature, not part of the API.
-#[cfg(all(feature = "scenes", not(dim2)))]
-#[doc(hidden)]
-pub mod scenes;
 pub mod snapshot;
 mod surface;
 mod tangent;

@@ -33,11 +33,11 @@
 //! other — a face touching at zero gap, common in towers built edge to edge, gets the law's
 //! static coefficient every step. Before, such unloaded contacts were never quiet, and the
 //! planks that carried them were hooked every step: 40 of the 445 colliders of a 444-plank
-//! keva tower recycled, against 94–98 % now (`tests/ordinary_stacks.rs` keeps that tower as
+//! keva tower recycled, against 94–98 % now (`crates/stickslip-fixtures/tests/ordinary_stacks.rs` keeps that tower as
 //! still as plain rapier). Contacts that slip, form or give stay hooked although their write
 //! may repeat (a slide at a flat μ_k): recycled, a sliding cube on a compound ground and the
 //! order of a pair's colliders made differences beyond plain rapier's own
-//! (`tests/ordinary_grounds.rs`, `tests/shared_world.rs`).
+//! (`crates/stickslip-fixtures/tests/ordinary_grounds.rs`, `crates/stickslip-fixtures/tests/shared_world.rs`).
 //!
 //! ## Pairs that move
 //! rapier updates a recycled pair in full, without the hook, once its relative pose drifts
@@ -181,7 +181,7 @@ fn step_motion(bodies: &RigidBodySet, collider: &Collider, reach: f32, dt: f32) 
 /// at zero gap, in a tower built edge to edge) gets the law's static coefficient every step
 /// and may be recycled; one whose points move faster is landing or lifting off (a part
 /// hopping on a feeder), and is hooked: recycled there, the landings of a hopping part went
-/// 7 % slower than hooked ones (`tests/rapier_feeder.rs`). A rigid law has no elastic range:
+/// 7 % slower than hooked ones (`crates/stickslip-fixtures/tests/rapier_feeder.rs`). A rigid law has no elastic range:
 /// its unloaded contacts are hooked.
 fn unloaded_at_rest(law: &stickslip_core::law::Law, relative: Vector, dt: f64) -> bool {
     use stickslip_core::law::FrictionLaw;

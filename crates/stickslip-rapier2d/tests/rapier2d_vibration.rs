@@ -17,10 +17,10 @@
 
 mod support;
 
-use stickslip_rapier2d::core::popov;
 use stickslip_rapier2d::core::waveform::Waveform;
 use stickslip_rapier2d::rapier::prelude::*;
 use stickslip_rapier2d::{Amplitude, ReadBack, VibrationDirection, VibrationMode, VibrationSource};
+use stickslip_theory::popov;
 use support::{Sled, ep_flat};
 
 const MU0: f64 = 0.5;

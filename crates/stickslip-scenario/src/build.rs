@@ -10,8 +10,8 @@ use crate::spec::{
 use rapier3d::glamx::EulerRot;
 use rapier3d::prelude::*;
 use std::collections::{BTreeMap, HashMap, HashSet};
-use stickslip_core::block::ForceProfile;
 use stickslip_core::law::{Coulomb, Law};
+use stickslip_core::profile::ForceProfile;
 use stickslip_core::waveform::Waveform;
 use stickslip_rapier::{
     FrictionMaterial, StickSlip, StickSlipConfig, VibrationComponent, VibrationSource,

@@ -121,7 +121,7 @@ fn builtin_is_the_showcase_file() {
 
 #[test]
 fn example1_block_sticks_then_matches_the_switched_reference() {
-    use stickslip_core::block::{Block, ForceProfile, Integrator, Tolerances, simulate};
+    use stickslip_theory::block::{Block, ForceProfile, Integrator, Tolerances, simulate};
     let scenario = load("example1_block");
     let Law::ElastoPlastic(ep) = &scenario.materials["ep"] else {
         panic!("EP expected")
@@ -427,8 +427,8 @@ fn row_250_tracks_every_contact() {
 
 #[test]
 fn elliptical_drive_moves_the_sleds_at_the_theorys_speed() {
+    use stickslip_fixtures::VibratingPlate;
     use stickslip_rapier::VibrationMode;
-    use stickslip_rapier::scenes::VibratingPlate;
     let mut r = Runner::new(load("elliptical_drive").build().unwrap());
     // 120 periods of 400 steps from rest, then the mean speed over 10 periods (0.2 s).
     r.run(120 * 400);

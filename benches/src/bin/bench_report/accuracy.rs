@@ -5,16 +5,16 @@
 use crate::table::{Summary, num, pct, render, upct};
 use rapier3d::prelude::*;
 use std::fmt::Write as _;
-use stickslip::core::block::{Block, ForceProfile, Integrator, Tolerances, simulate};
 use stickslip::core::law::{Coulomb, FrictionLaw, Law, Physical, Regularization, Regularized};
 use stickslip::core::popov;
 use stickslip::core::sliding_curve::Curve;
 use stickslip::core::waveform::Waveform;
-use stickslip::rapier::scenes::{BoxOnGround, BoxScene, Conveyor};
 use stickslip::rapier::{
     Amplitude, FrictionMaterial, StickSlip, StickSlipConfig, VibrationDirection, VibrationMode,
     VibrationSource,
 };
+use stickslip_fixtures::{BoxOnGround, BoxScene, Conveyor};
+use stickslip_theory::block::{Block, ForceProfile, Integrator, Tolerances, simulate};
 
 const G: f64 = 9.81;
 

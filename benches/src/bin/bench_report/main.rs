@@ -10,7 +10,7 @@
 //!   incline at 0.95 of break-away and the sliding acceleration above it, the stick-slip period on
 //!   a belt, Popov's μ̄ across β, and the seed's Example 1, for plain rapier and every law.
 //! - **Seed comparison** (measured here, with the core's adaptive integrators): the single block
-//!   (`stickslip_core::block`) and the 250-contact chain (`stickslip_core::chain`).
+//!   (`stickslip_theory::block`) and the 250-contact chain (`stickslip_theory::chain`).
 //!
 //! Run by `scripts/bench_report.sh`; by hand:
 //! `cargo run --release -p stickslip-benches --bin bench_report -- --cost-json cost.json --criterion DIR`.

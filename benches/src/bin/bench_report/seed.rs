@@ -5,12 +5,12 @@
 use crate::table::{Summary, num, ratio, render, upct};
 use std::fmt::Write as _;
 use std::time::Instant;
-use stickslip::core::block::{
-    Block, BlockRun, ForceProfile, Integrator, RunStats, SimError, Tolerances, simulate,
-};
-use stickslip::core::chain::{self, Chain, ChainError, ChainLaw, ChainParams, ChainRun};
 use stickslip::core::law::{ElastoPlastic, Law, Physical, Regularization, Regularized};
 use stickslip::core::sliding_curve::Curve;
+use stickslip_theory::block::{
+    Block, BlockRun, ForceProfile, Integrator, RunStats, SimError, Tolerances, simulate,
+};
+use stickslip_theory::chain::{self, Chain, ChainError, ChainLaw, ChainParams, ChainRun};
 
 /// Target speed-up of EP over Regul at equal (1 %) accuracy.
 const SPEEDUP_TARGET: f64 = 5.0;

@@ -42,14 +42,14 @@
 //! its capacity whatever the solver did: that solve built the normal force up while friction
 //! was capped by the part built so far, and the next stops the slip that let through. Plain
 //! rapier lets a box put down on a slope slip 10–100 µm there; an EP law with g_ba of a few
-//! µm would take it for break-away and, with μ_k < μ_s, slide off (`tests/ordinary_grounds.rs`).
+//! µm would take it for break-away and, with μ_k < μ_s, slide off (`crates/stickslip-fixtures/tests/ordinary_grounds.rs`).
 //!
 //! **A load that jumps.** The first solve under a load that jumped starts from the last
 //! solve's friction and touches the limit before it converges; the solves after it brake the
 //! slip that let through, at the limit. A contact that held gives at its capacity while that
 //! slip slows (see `gives`), reported stick-slip: a box on a slope jumped to 0.95 of
 //! break-away holds as plain rapier's does, where the law took the slip for break-away and,
-//! with μ_k < μ_s, slid off (`tests/rapier_load_jump.rs`). A load above the capacity makes
+//! with μ_k < μ_s, slid off (`crates/stickslip-fixtures/tests/rapier_load_jump.rs`). A load above the capacity makes
 //! the slip grow, and the law takes it.
 //!
 //! **Tried and dropped** (measured in `tests/ordinary_*.rs`): stick anchors — material points
@@ -179,7 +179,7 @@ fn one_step_slip(rec: &ContactState, input: &ContactInput) -> f64 {
 /// The first solve under a new load starts from the last one's friction and touches the
 /// limit before it has converged; the bodies keep the velocity that let through, and the
 /// solves after it brake that slip at the limit (plain rapier's box slips 0.3–0.5 mm after a
-/// jump to 0.95 of break-away at 60 Hz, then holds: `tests/rapier_load_jump.rs`). An elastic
+/// jump to 0.95 of break-away at 60 Hz, then holds: `crates/stickslip-fixtures/tests/rapier_load_jump.rs`). An elastic
 /// law with g_ba of microns, or a rigid one, would take that slip for break-away and, with
 /// μ_k < μ_s, slide off. A load above the capacity makes the slip grow instead. So a contact
 /// the law holds (sticking) gives while its slip

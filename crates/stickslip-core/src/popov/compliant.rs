@@ -12,7 +12,7 @@
 //! The numbers come from the exact event-driven periodic orbit of the model (stick phases in
 //! closed form, slip on the friction circle with an adaptive integrator for the in-plane
 //! direction, transitions by root finding, iterated to the fixed point of the period map),
-//! not from time stepping; [`SpringModel`](super::SpringModel) is the independent check.
+//! not from time stepping; the spring model of stickslip-theory (`SpringModel`) is the independent check.
 
 use super::oscillation::Excitation;
 use super::periodic_orbit::Orbit;
@@ -215,7 +215,7 @@ impl CompliantStaticFriction {
 ///
 /// Where the contact can stick throughout, its in-plane force is k_x times the base motion
 /// and the band is exactly the rigid Eq. 9 interval with force amplitudes k_z A_z, k_x A_x,
-/// k_x A_y ([`static_friction_superimposed`](super::static_friction_superimposed)), for any
+/// k_x A_y (stickslip-theory's `static_friction_superimposed`), for any
 /// stiffness. Where Eq. 9 has no solution the compliant contact still has a steady state: it
 /// slides in place, and along one axis the band shrinks to the single mean force of that
 /// motion (zero for a symmetric oscillation, nonzero for a drive). Independent of frequency.

@@ -78,7 +78,7 @@ fn bisect(mut f: impl FnMut(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
 
 /// Golden-section search for the minimum of `f` on `[lo, hi]`; returns `(x, f(x))`, never worse
 /// than the better endpoint (the function need not be unimodal, the result is then local).
-pub(crate) fn golden_min(mut f: impl FnMut(f64) -> f64, lo: f64, hi: f64) -> (f64, f64) {
+pub fn golden_min(mut f: impl FnMut(f64) -> f64, lo: f64, hi: f64) -> (f64, f64) {
     const INV_PHI: f64 = 0.618_033_988_749_894_8;
     let (mut a, mut b) = (lo, hi);
     let mut c = b - INV_PHI * (b - a);
@@ -112,7 +112,7 @@ pub(crate) fn golden_min(mut f: impl FnMut(f64) -> f64, lo: f64, hi: f64) -> (f6
 
 /// Global minimum of a 1-periodic function sampled on `n` equidistant phases, refined by golden
 /// section around the `refine` lowest local minima of the samples. Returns `(phase, value)`.
-pub(crate) fn periodic_min(mut f: impl FnMut(f64) -> f64, n: usize, refine: usize) -> (f64, f64) {
+pub fn periodic_min(mut f: impl FnMut(f64) -> f64, n: usize, refine: usize) -> (f64, f64) {
     let h = 1.0 / n as f64;
     let samples: Vec<f64> = (0..n).map(|i| f(i as f64 * h)).collect();
     let mut minima: Vec<usize> = (0..n)

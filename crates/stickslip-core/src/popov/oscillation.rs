@@ -6,8 +6,8 @@ use crate::waveform::Waveform;
 /// One oscillation component A·w(φ + phase), φ = f t.
 ///
 /// The unit of `amplitude` is set by the consumer: a force ratio A/F_z in
-/// [`static_friction_superimposed`](super::static_friction_superimposed), a displacement in
-/// [`SpringModel`](super::SpringModel).
+/// stickslip-theory's `static_friction_superimposed`, a displacement in
+/// `SpringModel`.
 #[derive(Clone, Debug)]
 pub struct Oscillation {
     amplitude: f64,
@@ -91,7 +91,7 @@ impl Excitation {
     }
 
     /// The present components, as (normal, tangential, transverse) with absent ones as `None`.
-    pub(crate) fn components(&self) -> [Option<&Oscillation>; 3] {
+    pub fn components(&self) -> [Option<&Oscillation>; 3] {
         [
             self.normal.as_ref(),
             self.tangential.as_ref(),

@@ -6,7 +6,7 @@
 //! these arcs while an engine runs: a three-state system with one event does not justify an
 //! ODE crate in every engine user's build. The tests check it against
 //! `differential-equations`' Dormand–Prince (a dev-dependency), which the reference
-//! simulators behind the `reference` feature use.
+//! simulators of stickslip-theory use.
 
 use super::numeric::bracketed_root;
 

@@ -2,14 +2,14 @@
 //! 0.95 F_ba (phase I, 0–1 s), break-away and sliding at 1.5 F_ba (II, 1–2 s) and slip-stick
 //! back to rest (III, 2–3 s); displacement and friction force over time for Phys, EP and Regul
 //! (several ġ_t0), in the core's ODE simulator and in a rapier world
-//! (`stickslip_rapier::scenes::example1_trace`), and the integrators' cost.
-//! Parameters as in `tests/example1_reference.rs` and `tests/rapier_example1.rs`.
+//! (`crate::scenes::example1_trace`), and the integrators' cost.
+//! Parameters as in `tests/example1_reference.rs` and `crates/stickslip-fixtures/tests/rapier_example1.rs`.
 
 use crate::FigureError;
 use serde::Serialize;
-use stickslip_core::block::{Block, ForceProfile, Integrator, STICK_SPEED, Tolerances, simulate};
 use stickslip_core::law::{Law, Physical, Regularization, Regularized};
 use stickslip_core::sliding_curve::Curve;
+use stickslip_theory::block::{Block, ForceProfile, Integrator, STICK_SPEED, Tolerances, simulate};
 
 /// Block mass (kg).
 pub const MASS: f64 = 1.0;
@@ -23,7 +23,7 @@ pub const MU_MAX: f64 = 0.32;
 pub const C: f64 = 1e4;
 /// Ends of the three phases (s).
 pub const PHASE_ENDS: [f64; 3] = [1.0, 2.0, 3.0];
-/// rapier's step for Example 1 (s), as in `tests/rapier_example1.rs`.
+/// rapier's step for Example 1 (s), as in `crates/stickslip-fixtures/tests/rapier_example1.rs`.
 pub const RAPIER_DT: f64 = 1.0 / 240.0;
 
 /// Displacement and friction force over time for one law.
@@ -152,12 +152,8 @@ pub fn compute(v_regs: &[f64], max_points: usize) -> Result<Example1, FigureErro
             x: idx.iter().map(|&i| run.x[i]).collect(),
             friction: idx.iter().map(|&i| friction[i]).collect(),
         });
-        let samples = stickslip_rapier::scenes::example1_trace(
-            law.clone(),
-            &profile,
-            RAPIER_DT,
-            PHASE_ENDS[2],
-        );
+        let samples =
+            crate::scenes::example1_trace(law.clone(), &profile, RAPIER_DT, PHASE_ENDS[2]);
         let samples = super::thin(&samples, max_points);
         rapier.push(Trace {
             label: label.clone(),

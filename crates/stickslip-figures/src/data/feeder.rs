@@ -1,12 +1,12 @@
-//! The vibratory feeder (`tests/rapier_feeder.rs`): transport speed against the trough
+//! The vibratory feeder (`crates/stickslip-fixtures/tests/rapier_feeder.rs`): transport speed against the trough
 //! amplitude at f = 25 Hz, throw angle 25°, μ = 0.5, from the core's rigid-body reference
-//! (`stickslip_core::feeder::VibratoryFeeder`), plain rapier at a fine step (1/30 000 s) and
+//! (`stickslip_theory::feeder::VibratoryFeeder`), plain rapier at a fine step (1/30 000 s) and
 //! rapier with the EP contact (c = 1e5 1/m) at 1/3000 s, all over 20 periods after 20.
 
 use crate::FigureError;
+use crate::scenes::feeder_speed;
 use serde::Serialize;
-use stickslip_core::feeder::VibratoryFeeder;
-use stickslip_rapier::scenes::feeder_speed;
+use stickslip_theory::feeder::VibratoryFeeder;
 
 /// Friction coefficient.
 pub const MU: f64 = 0.5;

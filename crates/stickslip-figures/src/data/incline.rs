@@ -1,13 +1,13 @@
-//! Creep on an incline over time (`tests/rapier_incline.rs`'s setup): a 125 kg box on a slope
+//! Creep on an incline over time (`crates/stickslip-fixtures/tests/rapier_incline.rs`'s setup): a 125 kg box on a slope
 //! at tan θ = 0.95 μ_ba in rapier at 60 Hz, with plain rapier Coulomb friction (μ_ba on the
 //! colliders), EP (c = 1e4 1/m, μ_ba = 0.5, μ_max = 0.55) and Regul (ġ_t0 = 0.01 and
 //! 0.001 m/s): displacement along the slope over 10 s after 1 s of settling.
 
 use crate::FigureError;
+use crate::scenes::BoxOnGround;
 use serde::Serialize;
 use stickslip_core::law::{Law, Regularization, Regularized};
 use stickslip_core::sliding_curve::Curve;
-use stickslip_rapier::scenes::BoxOnGround;
 use stickslip_rapier::{FrictionMaterial, StickSlip};
 
 /// Break-away coefficient.
@@ -66,7 +66,7 @@ fn run(label: &str, law: Option<Law>, seconds: f64) -> Creep {
         m.attach(&mut scene.world.colliders, scene.box_collider, None);
         m
     });
-    let mut step = |scene: &mut stickslip_rapier::scenes::BoxScene| match modifier.as_mut() {
+    let mut step = |scene: &mut crate::scenes::BoxScene| match modifier.as_mut() {
         Some(m) => m.step(&mut scene.world),
         None => scene.world.step(),
     };
@@ -111,7 +111,7 @@ pub fn compute(seconds: f64) -> Result<Vec<Creep>, FigureError> {
     ])
 }
 
-/// Regul's steady creep speed ġ_t0 tan θ / μ_ve (m/s), `tests/rapier_incline.rs`'s reference.
+/// Regul's steady creep speed ġ_t0 tan θ / μ_ve (m/s), `crates/stickslip-fixtures/tests/rapier_incline.rs`'s reference.
 pub fn regul_creep_speed(v_reg: f64) -> f64 {
     v_reg * (RATIO * MU_BA) / MU_MAX
 }

@@ -1,15 +1,15 @@
 //! Popov's Fig. 4: the effective coefficient μ̄(β) = μ0 (1 − α Ψ_w(β)) (Eq. 33) for the four
 //! closed-form waveforms, with points measured in rapier worlds on top
-//! (`stickslip_rapier::scenes::PopovDrag`, time-resolved normal vibration source, the setup of
-//! `tests/rapier_popov.rs`: μ0 = 0.5, α = 0.5, c = 1e4 1/m, f = 5 Hz); and the static
+//! (`crate::scenes::PopovDrag`, time-resolved normal vibration source, the setup of
+//! `crates/stickslip-fixtures/tests/rapier_popov.rs`: μ0 = 0.5, α = 0.5, c = 1e4 1/m, f = 5 Hz); and the static
 //! coefficient under normal, tangential and transverse oscillation (Eq. 4, 6, 8).
 
 use crate::FigureError;
+use crate::scenes::{PopovDrag, PopovDrive};
 use serde::Serialize;
-use stickslip_core::popov;
 use stickslip_core::waveform::{Waveform, WaveformKind};
 use stickslip_rapier::VibrationMode;
-use stickslip_rapier::scenes::{PopovDrag, PopovDrive};
+use stickslip_theory::popov;
 
 /// The waveforms of Popov's Fig. 4.
 pub const WAVEFORMS: [WaveformKind; 4] = [
@@ -56,7 +56,7 @@ pub struct PopovCurve {
     pub measured: Vec<Measured>,
 }
 
-/// The β values measured for `w`: `tests/rapier_popov.rs`'s grid, 0.25, 0.6, 0.9 and 1.5 β_c
+/// The β values measured for `w`: `crates/stickslip-fixtures/tests/rapier_popov.rs`'s grid, 0.25, 0.6, 0.9 and 1.5 β_c
 /// (0.5, 2, 5 and 12 without a finite β_c), plus 0.4 and 1.2 β_c (1 and 8) in full size;
 /// `quick` keeps two of them.
 pub fn measured_betas(w: &Waveform, quick: bool) -> Vec<f64> {

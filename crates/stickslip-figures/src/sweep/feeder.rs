@@ -1,13 +1,13 @@
 //! Feeder maps: the transport speed of a part on a vibrating trough over amplitude ×
 //! frequency × throw angle, each point a rapier world
-//! (`stickslip_rapier::scenes::feeder_speed`), beside the rigid-body reference
-//! (`stickslip_core::feeder::VibratoryFeeder`).
+//! (`crate::scenes::feeder_speed`), beside the rigid-body reference
+//! (`stickslip_theory::feeder::VibratoryFeeder`).
 
 use super::{Range, check_total, run_parallel, select};
 use crate::FigureError;
+use crate::scenes::feeder_speed;
 use serde::Serialize;
-use stickslip_core::feeder::VibratoryFeeder;
-use stickslip_rapier::scenes::feeder_speed;
+use stickslip_theory::feeder::VibratoryFeeder;
 
 /// Amplitude limits (mm).
 pub const AMPLITUDE_LIMITS: (f64, f64) = (0.01, 20.0);

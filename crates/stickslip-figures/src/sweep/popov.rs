@@ -1,14 +1,14 @@
 //! Popov maps: μ̄ over β × α for each waveform, from theory (Eq. 33) and measured in rapier
-//! worlds (`stickslip_rapier::scenes::PopovDrag`, the setup of `tests/rapier_popov.rs` with
+//! worlds (`crate::scenes::PopovDrag`, the setup of `crates/stickslip-fixtures/tests/rapier_popov.rs` with
 //! the swept α).
 
 use super::{Range, check_total, run_parallel, select};
 use crate::FigureError;
+use crate::scenes::{PopovDrag, PopovDrive};
 use serde::{Deserialize, Serialize};
 use stickslip_core::popov;
 use stickslip_core::waveform::{Waveform, WaveformKind};
 use stickslip_rapier::VibrationMode;
-use stickslip_rapier::scenes::{PopovDrag, PopovDrive};
 
 /// Smallest and largest β a sweep accepts.
 pub const BETA_LIMITS: (f64, f64) = (0.01, 100.0);

@@ -1,0 +1,21 @@
+//! stickslip's test fixtures (unpublished): the reference scenes its tests, benches and
+//! validation examples measure against analytic results (a box on an incline, on a belt,
+//! dragged over a vibrating plate, the seed's Example 1, a vibratory feeder), the ordinary
+//! scenes run beside plain rapier, and [`Conveyor`], a user's own hook to wrap.
+//!
+//! The package `stickslip-fixtures-035` compiles these same sources, and the same tests,
+//! against rapier 0.35 (cfg `rapier_035`).
+
+// The figures' reference scenes: one file, which stickslip-figures compiles privately.
+#[path = "../../stickslip-figures/src/scenes.rs"]
+mod reference;
+
+mod conveyor;
+mod example1;
+pub mod ordinary;
+mod plate;
+
+pub use conveyor::Conveyor;
+pub use example1::example1;
+pub use plate::{PlateMeasurement, VibratingPlate};
+pub use reference::*;

@@ -1,0 +1,414 @@
+//! Quiet contacts recycle (stickslip turns its hook flag off, rapier keeps the pair's
+//! contacts) without changing the friction law. Invariant: a box resting on a ground, both
+//! attached with the default configuration, is recycled while it holds well inside its limit;
+//! under a load that then rises slowly, or jumps, it breaks away at the same load as the same
+//! box with every contact hooked every step (rapier's `contact_recycling` off), for masses
+//! over four decades and two time steps — at μ_ba (EP, static above kinetic), holding without
+//! more than plain rapier (+ g_ba) after a jump to 0.6 μ_ba, moving as the hooked box after a
+//! jump to 0.9 μ_ba up to plain rapier's own difference between recycled and fresh contacts
+//! (both hold: `crates/stickslip-fixtures/tests/rapier_load_jump.rs`), sliding at g (sin θ − μ_k cos θ) after a jump to
+//! 1.2 μ_ba. The same box carried at 0.5 m/s by a kinematic platform (a pair that moves,
+//! recycled because rapier's own full update writes the same μ) is recycled while it holds and
+//! breaks away at μ_ba, where the hooked one does. A world saved while contacts are recycled,
+//! and piles on a heightfield and on a compound ground (composite contact patches, recycled or
+//! not), resume bit for bit.
+
+use rapier3d::prelude::*;
+use stickslip_core::law::Law;
+use stickslip_core::sliding_curve::Curve;
+use stickslip_fixtures::ordinary::{Ground, box_on_slope};
+use stickslip_rapier::{FrictionMaterial, StickSlip, WorldSnapshot};
+
+const MU_BA: f64 = 0.5;
+const MU_K: f64 = 0.3;
+const C: f64 = 1e5;
+const G: f64 = 9.81;
+
+fn ep() -> Law {
+    Law::elasto_plastic(C, MU_BA, MU_BA, Curve::constant(MU_K).unwrap()).unwrap()
+}
+
+fn set_slope(world: &mut PhysicsWorld, tan_theta: f64) {
+    let theta = tan_theta.atan();
+    world.gravity = Vector::new((G * theta.sin()) as f32, -(G * theta.cos()) as f32, 0.0);
+}
+
+/// A box of `mass` on a cuboid ground, flat, everything attached; `recycling` sets rapier's
+/// `contact_recycling` (off: every contact hooked every step).
+fn scene(mass: f32, dt: f64, recycling: bool) -> (PhysicsWorld, StickSlip, RigidBodyHandle) {
+    scene_with(mass, dt, recycling, true)
+}
+
+/// [`scene`], with stickslip attached or (`attach` false) plain rapier.
+fn scene_with(
+    mass: f32,
+    dt: f64,
+    recycling: bool,
+    attach: bool,
+) -> (PhysicsWorld, StickSlip, RigidBodyHandle) {
+    let mut s = box_on_slope(Ground::Cuboid, 0.0, 0.5, dt);
+    let b = s.bodies[0];
+    let body = &mut s.world.bodies[b];
+    let density = mass / 0.125;
+    for h in body.colliders().to_vec() {
+        s.world.colliders[h].set_density(density);
+    }
+    s.world.integration_parameters.contact_recycling = recycling;
+    let mut m = StickSlip::new(FrictionMaterial::new(ep()));
+    if attach {
+        for h in s.all_colliders() {
+            m.attach(&mut s.world.colliders, h, None);
+        }
+    }
+    // Settle flat.
+    for _ in 0..(0.5 / dt) as usize {
+        m.step(&mut s.world);
+    }
+    (s.world, m, b)
+}
+
+fn box_collider(world: &PhysicsWorld, b: RigidBodyHandle) -> ColliderHandle {
+    world.bodies[b].colliders()[0]
+}
+
+/// The slope's tangent at which the box starts sliding (downhill speed above 1 cm/s) while
+/// the tangent rises by `rate` per second from 0.3, and the share of the hold before 0.35 in
+/// which the box's contacts were recycled.
+fn break_away_under_a_ramp(mass: f32, dt: f64, recycling: bool, rate: f64) -> (f64, f64) {
+    let (world, m, b) = scene(mass, dt, recycling);
+    ramp_to_break_away(world, m, b, dt, rate)
+}
+
+/// Raises the slope's tangent by `rate` per second from 0.3 until body `b` slides (downhill
+/// speed above 1 cm/s): the tangent then, and the share of the hold before 0.35 in which its
+/// collider's contacts were recycled.
+fn ramp_to_break_away(
+    mut world: PhysicsWorld,
+    mut m: StickSlip,
+    b: RigidBodyHandle,
+    dt: f64,
+    rate: f64,
+) -> (f64, f64) {
+    let collider = box_collider(&world, b);
+    let (mut recycled, mut held) = (0usize, 0usize);
+    let mut tan = 0.3;
+    while tan < 0.8 {
+        set_slope(&mut world, tan);
+        m.step(&mut world);
+        if tan < 0.35 {
+            held += 1;
+            recycled += usize::from(m.is_recycled(collider));
+        }
+        if world.bodies[b].linvel().x > 0.01 {
+            return (tan, recycled as f64 / held as f64);
+        }
+        tan += rate * dt;
+    }
+    panic!("no break-away below tan 0.8 (dt {dt})");
+}
+
+/// For masses over four decades and two time steps, `break_away(mass, dt, recycling, rate)`
+/// recycles the held box (`what`) and breaks away at μ_ba, at the same load recycled or
+/// hooked every step.
+fn breaks_away_as_hooked(what: &str, break_away: fn(f32, f64, bool, f64) -> (f64, f64)) {
+    for dt in [1.0 / 60.0, 1.0 / 240.0] {
+        for mass in [0.1f32, 10.0, 1000.0] {
+            let (recycled_at, share) = break_away(mass, dt, true, 0.05);
+            let (hooked_at, none) = break_away(mass, dt, false, 0.05);
+            println!(
+                "dt {dt:.4} mass {mass:6}: {what} breaks away at tan {recycled_at:.4} recycled \
+                 ({:.0} % of the hold recycled), {hooked_at:.4} hooked",
+                100.0 * share
+            );
+            assert!(share > 0.9, "the {what} was recycled {share}");
+            assert_eq!(none, 0.0, "nothing recycles with contact_recycling off");
+            // Break-away at μ_ba (the tangent grows by rate·dt per step; the box needs a few
+            // steps to pass 1 cm/s) and at the same load either way.
+            for at in [recycled_at, hooked_at] {
+                assert!((at - MU_BA).abs() < 0.01, "break-away at tan {at}");
+            }
+            assert!(
+                (recycled_at - hooked_at).abs() < 2.0 * 0.05 * dt + 1e-9,
+                "recycled {recycled_at} vs hooked {hooked_at}"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_recycled_contact_breaks_away_under_a_rising_load_where_a_hooked_one_does() {
+    breaks_away_as_hooked("resting box", break_away_under_a_ramp);
+}
+
+/// A box of `mass` carried at 0.5 m/s along z by a kinematic platform (so it moves 2–8 mm a
+/// step, far more than a resting body), both attached: the slope's tangent at which the box
+/// starts sliding on the platform (downhill speed above 1 cm/s) while the tangent rises by
+/// `rate` per second from 0.3, and the share of the hold before 0.35 in which the box's
+/// contacts were recycled.
+fn break_away_on_a_moving_platform(mass: f32, dt: f64, recycling: bool, rate: f64) -> (f64, f64) {
+    let mut world = PhysicsWorld::default();
+    world.integration_parameters.dt = dt as f32;
+    world.integration_parameters.contact_recycling = recycling;
+    let v = Vector::new(0.0, 0.0, 0.5);
+    let platform = world.insert_body(RigidBodyBuilder::kinematic_velocity_based().linvel(v));
+    let under = world.insert_collider(
+        ColliderBuilder::cuboid(5.0, 0.1, 200.0)
+            .translation(Vector::new(0.0, -0.1, 0.0))
+            .friction(MU_BA as f32),
+        Some(platform),
+    );
+    let (b, on) = world.insert(
+        RigidBodyBuilder::dynamic()
+            .translation(Vector::new(0.0, 0.25, 0.0))
+            .linvel(v)
+            .can_sleep(false),
+        ColliderBuilder::cuboid(0.25, 0.25, 0.25)
+            .density(mass / 0.125)
+            .friction(MU_BA as f32),
+    );
+    let mut m = StickSlip::new(FrictionMaterial::new(ep()));
+    for h in [under, on] {
+        m.attach(&mut world.colliders, h, None);
+    }
+    set_slope(&mut world, 0.0);
+    for _ in 0..(0.5 / dt) as usize {
+        m.step(&mut world);
+    }
+    ramp_to_break_away(world, m, b, dt, rate)
+}
+
+#[test]
+fn a_carried_contact_recycles_and_breaks_away_where_a_hooked_one_does() {
+    breaks_away_as_hooked("carried box", break_away_on_a_moving_platform);
+}
+
+/// Downhill displacement (m) over 2 s and the final acceleration (m/s²) of a box resting
+/// at tan 0.1 (recycled) when the slope jumps to `tan_theta`.
+fn after_a_jump(mass: f32, dt: f64, recycling: bool, tan_theta: f64) -> (f64, f64) {
+    jump(mass, dt, recycling, true, tan_theta)
+}
+
+/// [`after_a_jump`], with stickslip or (`attach` false) plain rapier.
+fn jump(mass: f32, dt: f64, recycling: bool, attach: bool, tan_theta: f64) -> (f64, f64) {
+    let (mut world, mut m, b) = scene_with(mass, dt, recycling, attach);
+    set_slope(&mut world, 0.1);
+    for _ in 0..(1.0 / dt) as usize {
+        m.step(&mut world);
+    }
+    assert_eq!(
+        m.is_recycled(box_collider(&world, b)),
+        recycling && attach,
+        "quiet before the jump"
+    );
+    set_slope(&mut world, tan_theta);
+    let x0 = world.bodies[b].translation().x as f64;
+    let steps = (2.0 / dt) as usize;
+    let mut v = [0.0; 2];
+    for k in 0..steps {
+        m.step(&mut world);
+        if k + 2 >= steps {
+            v[k + 2 - steps] = world.bodies[b].linvel().x as f64;
+        }
+    }
+    (
+        world.bodies[b].translation().x as f64 - x0,
+        (v[1] - v[0]) / dt,
+    )
+}
+
+#[test]
+fn a_recycled_contact_holds_or_slides_after_a_jump_in_load_as_a_hooked_one() {
+    let g_ba = MU_BA / C;
+    for dt in [1.0 / 60.0, 1.0 / 240.0] {
+        for mass in [0.1f32, 10.0, 1000.0] {
+            // Below break-away: both hold, moving no more than plain rapier's first solve
+            // after a jump lets the contact slip, plus the law's elastic range.
+            let (plain, _) = jump(mass, dt, true, false, 0.6 * MU_BA);
+            for recycling in [true, false] {
+                let (dx, _) = after_a_jump(mass, dt, recycling, 0.6 * MU_BA);
+                assert!(
+                    dx.abs() < plain.abs() + g_ba,
+                    "mass {mass} dt {dt} recycling {recycling}: moved {dx}, plain {plain}"
+                );
+            }
+            // Closer to break-away a jump in one step makes rapier's first solve let the
+            // contact slip (plain rapier too, ~0.2 mm, then it stops); stickslip then does
+            // the same recycled or hooked.
+            // The law's steps are the same either way; what differs is rapier's own: a
+            // recycled pair keeps its contact points. So the two differ by no more than
+            // plain rapier recycled and not (+ 0.1 % of the slip for rounding).
+            let (recycled, _) = after_a_jump(mass, dt, true, 0.9 * MU_BA);
+            let (hooked, _) = after_a_jump(mass, dt, false, 0.9 * MU_BA);
+            let (plain_recycled, _) = jump(mass, dt, true, false, 0.9 * MU_BA);
+            let (plain_fresh, _) = jump(mass, dt, false, false, 0.9 * MU_BA);
+            let rapiers = (plain_recycled - plain_fresh).abs();
+            println!(
+                "dt {dt:.4} mass {mass:6}: jump to 0.9 μ_ba moves {recycled:.3e} m recycled, \
+                 {hooked:.3e} m hooked (plain rapier {plain_recycled:.3e} recycled, \
+                 {plain_fresh:.3e} not)"
+            );
+            assert!(
+                (recycled - hooked).abs() <= rapiers + 1e-3 * hooked.abs().max(g_ba),
+                "recycled {recycled} vs hooked {hooked}, plain rapier's gap {rapiers}"
+            );
+            // Above: both slide at the kinetic acceleration.
+            let tan: f64 = 1.2 * MU_BA;
+            let theta = tan.atan();
+            let expected = G * (theta.sin() - MU_K * theta.cos());
+            let (_, recycled) = after_a_jump(mass, dt, true, tan);
+            let (_, hooked) = after_a_jump(mass, dt, false, tan);
+            println!(
+                "dt {dt:.4} mass {mass:6}: a {recycled:.4} recycled, {hooked:.4} hooked, \
+                 {expected:.4} closed form"
+            );
+            for a in [recycled, hooked] {
+                assert!((a / expected - 1.0).abs() < 0.02, "a = {a} vs {expected}");
+            }
+        }
+    }
+}
+
+/// Every body's pose and velocity, as bits.
+fn bits(world: &PhysicsWorld) -> Vec<u32> {
+    let mut out = Vec::new();
+    for (_, b) in world.bodies.iter() {
+        let p = b.position();
+        out.extend(p.translation.to_array().map(f32::to_bits));
+        out.extend(p.rotation.to_array().map(f32::to_bits));
+        out.extend(b.linvel().to_array().map(f32::to_bits));
+        out.extend(b.angvel().to_array().map(f32::to_bits));
+    }
+    out
+}
+
+/// Runs `world` with `m` for `before` steps, saves both, resumes, and compares the two runs
+/// bit for bit over `after` steps, with `event` applied to both worlds at step `event_at`
+/// after the snapshot. Returns how many attached colliders were recycled at the snapshot.
+fn resumes_bit_identically(
+    mut world: PhysicsWorld,
+    mut m: StickSlip,
+    before: usize,
+    after: usize,
+    event_at: usize,
+    event: impl Fn(&mut PhysicsWorld),
+) -> usize {
+    for _ in 0..before {
+        m.step(&mut world);
+    }
+    let recycled = world
+        .colliders
+        .iter()
+        .filter(|(h, _)| m.is_recycled(*h))
+        .count();
+    let mut bytes = Vec::new();
+    WorldSnapshot::save_from(&world, &m, &mut bytes).unwrap();
+    let (mut w2, mut m2) = WorldSnapshot::load(bytes.as_slice())
+        .unwrap()
+        .restore(())
+        .unwrap();
+    for k in 0..after {
+        if k == event_at {
+            event(&mut world);
+            event(&mut w2);
+        }
+        m.step(&mut world);
+        m2.step(&mut w2);
+        assert!(
+            bits(&world) == bits(&w2),
+            "diverged {k} steps after restore"
+        );
+    }
+    recycled
+}
+
+/// 36 stacks of two 0.5 m boxes (friction μ_ba, moving at `v`) on the ground already in
+/// `world`, every collider attached.
+fn stacks_on(world: &mut PhysicsWorld, v: Vector) -> StickSlip {
+    for i in 0..36 {
+        let (x, z) = ((i % 6) as f32 - 2.5, (i / 6) as f32 - 2.5);
+        for level in 0..2 {
+            world.insert(
+                RigidBodyBuilder::dynamic()
+                    .translation(Vector::new(1.2 * x, 0.76 + 0.5 * level as f32, 1.2 * z))
+                    .linvel(v)
+                    .can_sleep(false),
+                ColliderBuilder::cuboid(0.25, 0.25, 0.25)
+                    .density(500.0)
+                    .friction(MU_BA as f32),
+            );
+        }
+    }
+    let mut m = StickSlip::new(FrictionMaterial::new(ep()));
+    for h in world.colliders.iter().map(|(h, _)| h).collect::<Vec<_>>() {
+        m.attach(&mut world.colliders, h, None);
+    }
+    m
+}
+
+#[test]
+fn a_snapshot_taken_while_contacts_recycle_resumes_bit_identically() {
+    let mut world = PhysicsWorld::default();
+    world.insert_collider(
+        ColliderBuilder::cuboid(10.0, 0.5, 10.0).friction(MU_BA as f32),
+        None,
+    );
+    let m = stacks_on(&mut world, Vector::ZERO);
+    // After the snapshot the floor tilts past break-away: recycled contacts are hooked again
+    // in both runs, and the stacks slide.
+    let recycled = resumes_bit_identically(world, m, 120, 240, 60, |w| set_slope(w, 0.7));
+    assert!(recycled >= 60, "only {recycled} colliders recycled");
+}
+
+#[test]
+fn a_snapshot_taken_while_carried_contacts_recycle_resumes_bit_identically() {
+    let mut world = PhysicsWorld::default();
+    let v = Vector::new(0.0, 0.0, 0.5);
+    let platform = world.insert_body(RigidBodyBuilder::kinematic_velocity_based().linvel(v));
+    world.insert_collider(
+        ColliderBuilder::cuboid(10.0, 0.5, 200.0).friction(MU_BA as f32),
+        Some(platform),
+    );
+    let m = stacks_on(&mut world, v);
+    // Saved while the stacks ride, then tilted past break-away.
+    let recycled = resumes_bit_identically(world, m, 120, 240, 60, |w| set_slope(w, 0.7));
+    assert!(recycled >= 60, "only {recycled} colliders recycled");
+}
+
+/// A pile of boxes and balls dropped on a composite ground.
+fn pile_on(ground: Ground) -> (PhysicsWorld, StickSlip) {
+    let mut world = PhysicsWorld::default();
+    ground.insert(&mut world, 6.0, 0.5);
+    for i in 0..48 {
+        let (x, z, y) = ((i % 4) as f32, ((i / 4) % 4) as f32, (i / 16) as f32);
+        let at = Vector::new(0.7 * x - 1.0 + 0.1 * y, 0.4 + 0.8 * y, 0.7 * z - 1.0);
+        let shape = if i % 3 == 0 {
+            ColliderBuilder::ball(0.25)
+        } else {
+            ColliderBuilder::cuboid(0.25, 0.2, 0.3)
+        };
+        world.insert(
+            RigidBodyBuilder::dynamic().translation(at),
+            shape.density(700.0),
+        );
+    }
+    let mut m = StickSlip::new(FrictionMaterial::new(ep()));
+    for h in world.colliders.iter().map(|(h, _)| h).collect::<Vec<_>>() {
+        m.attach(&mut world.colliders, h, None);
+    }
+    (world, m)
+}
+
+#[test]
+fn piles_on_a_heightfield_and_a_compound_resume_bit_identically() {
+    for ground in [Ground::HeightField, Ground::Compound] {
+        let (world, m) = pile_on(ground);
+        // Saved while the pile still moves (composite patches measured after the solve),
+        // resumed for 2 s as it settles (and recycles).
+        let recycled = resumes_bit_identically(world, m, 60, 120, 1000, |_| {});
+        println!("{ground:?}: {recycled} colliders recycled at the snapshot");
+        let (world, m) = pile_on(ground);
+        // Saved once settled, then tilted past break-away.
+        let recycled = resumes_bit_identically(world, m, 180, 120, 30, |w| set_slope(w, 0.7));
+        println!("{ground:?}: {recycled} colliders recycled at the later snapshot");
+    }
+}

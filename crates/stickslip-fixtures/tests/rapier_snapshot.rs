@@ -1,0 +1,796 @@
+//! Snapshot and restore. Invariant: a world with stickslip friction saved after some steps —
+//! in memory (`StickSlip::snapshot`/`restore`) or through bytes and a file (`WorldSnapshot`)
+//! — and resumed from a freshly deserialized rapier world and a fresh modifier continues
+//! bit for bit like the uninterrupted run: every body's pose and velocity, every contact
+//! report and the world totals are identical (`to_bits`) at each of 1 000 steps after the
+//! restore, for the EP, Phys and Regul laws, with time-resolved and averaged vibration,
+//! user hooks wrapped, and contacts appearing and disappearing (boxes pushed off the edge
+//! of the ground, bouncing, landing, sleeping). A modifier restarted without the saved state
+//! diverges (so the comparison can fail). Garbage, truncated and mutated snapshot bytes, and
+//! inconsistent snapshot data, give an error and never a panic.
+
+use rapier3d::prelude::*;
+use stickslip_core::law::{Law, Physical, Regularization, Regularized};
+use stickslip_core::sliding_curve::{Curve, StribeckDecay};
+use stickslip_core::waveform::Waveform;
+use stickslip_fixtures::Conveyor;
+use stickslip_rapier::snapshot::SnapshotError;
+use stickslip_rapier::{
+    Amplitude, ContactReport, FrictionMaterial, StickSlip, StickSlipSnapshot, VibrationDirection,
+    VibrationMode, VibrationSource, WorldSnapshot, WorldTotals,
+};
+
+/// Steps before the snapshot, and after it.
+const BEFORE: usize = 150;
+const AFTER: usize = 1000;
+
+#[derive(Clone, Copy, Debug)]
+enum Kind {
+    Ep,
+    Phys,
+    Regul,
+}
+
+fn law(kind: Kind) -> Law {
+    let stribeck = Curve::stribeck(0.6, 0.4, 0.05, StribeckDecay::Exponential, 0.01).unwrap();
+    match kind {
+        Kind::Ep => Law::elasto_plastic(2e3, 0.5, 0.6, stribeck).unwrap(),
+        Kind::Phys => Law::Physical(Physical::new(0.5, stribeck).unwrap()),
+        Kind::Regul => {
+            Law::Regularized(Regularized::new(stribeck, 1e-3, Regularization::Tanh).unwrap())
+        }
+    }
+}
+
+struct Scene {
+    world: PhysicsWorld,
+    bodies: Vec<RigidBodyHandle>,
+    ground: ColliderHandle,
+    floor: ColliderHandle,
+    belt: ColliderHandle,
+}
+
+/// A ground slab (stickslip, normal vibration) above a wide floor, a fixed belt beside it (its own material, an
+/// in-plane vibration, a conveyor hook), and boxes that are dropped, pushed off the ground's
+/// edge, bounce and rest (some may sleep).
+fn scene() -> Scene {
+    let mut world = PhysicsWorld::default();
+    let ground = world.insert_collider(
+        ColliderBuilder::cuboid(2.5, 0.1, 2.0).restitution(0.3),
+        None,
+    );
+    // Boxes that leave the ground land here (new contacts, same stickslip material).
+    let floor = world.insert_collider(
+        ColliderBuilder::cuboid(50.0, 0.1, 50.0).translation(Vector::new(0.0, -3.0, 0.0)),
+        None,
+    );
+    let belt = world.insert_collider(
+        ColliderBuilder::cuboid(1.0, 0.1, 1.0).translation(Vector::new(0.0, 0.0, 4.0)),
+        None,
+    );
+    let mut bodies = Vec::new();
+    for i in 0..8 {
+        let (x, z) = if i < 6 {
+            (-1.5 + 0.6 * i as f32, 0.0)
+        } else {
+            (-0.3 + 0.6 * (i - 6) as f32, 4.0)
+        };
+        let (b, _) = world.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(Vector::new(
+                    x,
+                    0.3 + 0.25 * i as f32,
+                    z + 0.1 * (i as f32).sin(),
+                ))
+                .rotation(Vector::new(0.0, 0.3 * i as f32, 0.05 * i as f32))
+                .linvel(Vector::new(0.05 * i as f32, 0.0, 0.0))
+                .can_sleep(i % 3 == 0),
+            ColliderBuilder::cuboid(0.15, 0.15, 0.15)
+                .density(500.0 + 100.0 * i as f32)
+                .restitution(0.2),
+        );
+        bodies.push(b);
+    }
+    Scene {
+        world,
+        bodies,
+        ground,
+        floor,
+        belt,
+    }
+}
+
+type Modifier = StickSlip<Conveyor>;
+
+fn modifier(kind: Kind, mode: VibrationMode, s: &mut Scene) -> Modifier {
+    let conveyor = Conveyor {
+        belt: s.belt,
+        velocity: Vector::new(0.3, 0.0, 0.0),
+    };
+    // The user flags the belt for their hook, as they would without stickslip.
+    s.world.colliders[s.belt].set_active_hooks(ActiveHooks::MODIFY_SOLVER_CONTACTS);
+    let mut m = StickSlip::with_hooks(FrictionMaterial::new(law(kind)), conveyor)
+        .with_read_back(stickslip_rapier::ReadBack::Contacts);
+    m.attach(&mut s.world.colliders, s.ground, None);
+    m.attach(&mut s.world.colliders, s.floor, None);
+    let belt_law = Law::elasto_plastic(5e3, 0.7, 0.7, Curve::constant(0.7).unwrap()).unwrap();
+    m.attach(
+        &mut s.world.colliders,
+        s.belt,
+        Some(FrictionMaterial::new(belt_law)),
+    );
+    // Time-resolved sources must be resolved by dt = 1/60; averaged ones are ultrasonic.
+    let f = match mode {
+        VibrationMode::TimeResolved => 2.5,
+        VibrationMode::Averaged => 2e4,
+    };
+    let normal = VibrationSource::new(
+        VibrationDirection::Normal,
+        Amplitude::Ratio(0.4),
+        f,
+        Waveform::Sine,
+        0.1,
+        mode,
+    )
+    .unwrap();
+    let table = Waveform::from_table(&[0.0, 2.0, 0.5, 1.7, 0.2]).unwrap();
+    let in_plane = VibrationSource::new(
+        VibrationDirection::Tangential {
+            axis: [1.0, 0.0, 0.3],
+        },
+        Amplitude::Force(20.0),
+        f * 1.3,
+        table,
+        0.25,
+        mode,
+    )
+    .unwrap()
+    .with_tangential_stiffness(3e4)
+    .unwrap();
+    m.set_vibration(s.ground, normal);
+    m.set_vibration(s.belt, in_plane);
+    m
+}
+
+/// Deterministic pushes: back and forth beyond break-away at the peaks (stick-slip), with a
+/// drift toward the +x edge for the two outer boxes (they slide off and fall, one before the
+/// snapshot, one after), and lifts that make boxes hop (contacts vanish and re-form).
+fn push(world: &mut PhysicsWorld, bodies: &[RigidBodyHandle], k: usize) {
+    for (i, b) in bodies.iter().enumerate() {
+        let body = &mut world.bodies[*b];
+        let m = body.mass();
+        let phase = k as f32 * 0.03 + i as f32;
+        let bias = match i {
+            5 => 0.25,
+            4 => 0.12,
+            _ => 0.0,
+        };
+        let fx = m * 9.81 * (bias + 0.52 * phase.sin());
+        let lift = if (k + 40 * i) % 300 < 12 { 14.0 } else { 0.0 };
+        body.reset_forces(false);
+        if body.is_sleeping() && i % 2 == 0 {
+            continue; // some sleeping bodies stay asleep
+        }
+        body.add_force(Vector::new(fx, m * lift, 0.1 * fx), true);
+    }
+}
+
+fn step(s: &mut PhysicsWorld, bodies: &[RigidBodyHandle], m: &mut Modifier, k: usize) {
+    push(s, bodies, k);
+    m.step(s);
+}
+
+/// Bits of everything observable after a step: bodies, reports, totals.
+fn state(world: &PhysicsWorld, bodies: &[RigidBodyHandle], m: &Modifier) -> Vec<u64> {
+    let mut out = Vec::new();
+    for b in bodies {
+        let b = &world.bodies[*b];
+        let p = b.position();
+        let vals = [
+            p.translation.to_array(),
+            b.linvel().to_array(),
+            b.angvel().to_array(),
+        ];
+        out.extend(vals.iter().flatten().map(|x| x.to_bits() as u64));
+        out.extend(p.rotation.to_array().map(|x| x.to_bits() as u64));
+        out.push(b.is_sleeping() as u64);
+    }
+    out.push(m.reports().unwrap().len() as u64);
+    for r in m.reports().unwrap() {
+        out.extend(report_bits(r));
+    }
+    out.extend(totals_bits(&m.totals().unwrap()));
+    out.push(m.time().to_bits());
+    out
+}
+
+fn report_bits(r: &ContactReport) -> Vec<u64> {
+    let (a, b) = (
+        r.collider1.0.into_raw_parts(),
+        r.collider2.0.into_raw_parts(),
+    );
+    let mut v = vec![
+        a.0 as u64,
+        a.1 as u64,
+        b.0 as u64,
+        b.1 as u64,
+        r.regime as u64,
+    ];
+    for x in [r.point, r.normal, r.friction_force, r.slip_velocity] {
+        v.extend(x.map(|x| x.to_bits() as u64));
+    }
+    v.extend([r.mu, r.limit, r.normal_force, r.dissipated_power].map(f64::to_bits));
+    v
+}
+
+fn totals_bits(t: &WorldTotals) -> Vec<u64> {
+    let mut v = vec![
+        t.contacts as u64,
+        t.sticking as u64,
+        t.stick_slip as u64,
+        t.sliding as u64,
+    ];
+    v.extend(
+        [
+            t.normal_force,
+            t.friction_force,
+            t.dissipated_power,
+            t.dissipated_energy,
+        ]
+        .map(f64::to_bits),
+    );
+    v
+}
+
+fn world_bytes(world: &PhysicsWorld, m: &Modifier) -> Vec<u8> {
+    let mut bytes = Vec::new();
+    WorldSnapshot::save_from(world, m, &mut bytes).unwrap();
+    bytes
+}
+
+fn run_case(kind: Kind, mode: VibrationMode) {
+    let mut s = scene();
+    let mut m = modifier(kind, mode, &mut s);
+    for k in 0..BEFORE {
+        step(&mut s.world, &s.bodies, &mut m, k);
+    }
+    let contacts_at_snapshot = m.active_contacts();
+    assert!(
+        contacts_at_snapshot >= 4,
+        "{kind:?}: {contacts_at_snapshot} contacts"
+    );
+
+    // In memory: the modifier's snapshot object, rapier's world through bytes (rapier's world
+    // has no Clone).
+    let in_memory: StickSlipSnapshot = m.snapshot();
+    let bytes = world_bytes(&s.world, &m);
+    let loaded = WorldSnapshot::load(bytes.as_slice()).unwrap();
+    let mut w_mem = loaded.world;
+    let mut m_mem = StickSlip::restore(&in_memory, &w_mem.colliders, *m.inner()).unwrap();
+    // Through a file.
+    let path = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("snapshot-{kind:?}-{mode:?}.bin"));
+    WorldSnapshot::save_from(&s.world, &m, std::fs::File::create(&path).unwrap()).unwrap();
+    let (mut w_file, mut m_file) = WorldSnapshot::load(std::fs::File::open(&path).unwrap())
+        .unwrap()
+        .restore(*m.inner())
+        .unwrap();
+    std::fs::remove_file(&path).ok();
+    // A restored modifier reports what the original reported.
+    assert_eq!(
+        state(&w_file, &s.bodies, &m_file),
+        state(&s.world, &s.bodies, &m)
+    );
+    assert_eq!(m_file.active_contacts(), contacts_at_snapshot);
+    // Control: the same world resumed with a modifier that lost its state (fresh modifier
+    // with the same materials, sources and time). It must diverge, or this test proves nothing.
+    let mut w_lost = WorldSnapshot::load(bytes.as_slice()).unwrap().world;
+    let mut lost = {
+        let mut sc = Scene {
+            world: std::mem::take(&mut w_lost),
+            bodies: s.bodies.clone(),
+            ground: s.ground,
+            floor: s.floor,
+            belt: s.belt,
+        };
+        let mut l = modifier(kind, mode, &mut sc);
+        l.set_time(m.time());
+        w_lost = sc.world;
+        l
+    };
+    let mut diverged = false;
+
+    let (mut min_reports, mut max_reports) = (usize::MAX, 0);
+    let capacity_before = m.state_capacity();
+    let on_ground = |w: &PhysicsWorld| {
+        s.bodies
+            .iter()
+            .filter(|b| w.bodies[**b].translation().y > -1.0)
+            .count()
+    };
+    let on_ground_at_snapshot = on_ground(&s.world);
+    for k in BEFORE..BEFORE + AFTER {
+        step(&mut s.world, &s.bodies, &mut m, k);
+        step(&mut w_mem, &s.bodies, &mut m_mem, k);
+        step(&mut w_file, &s.bodies, &mut m_file, k);
+        step(&mut w_lost, &s.bodies, &mut lost, k);
+        let want = state(&s.world, &s.bodies, &m);
+        assert!(
+            want == state(&w_mem, &s.bodies, &m_mem),
+            "{kind:?} {mode:?}: in-memory restore differs at step {k}"
+        );
+        assert!(
+            want == state(&w_file, &s.bodies, &m_file),
+            "{kind:?} {mode:?}: file restore differs at step {k}"
+        );
+        diverged |= want != state(&w_lost, &s.bodies, &lost);
+        min_reports = min_reports.min(m.reports().unwrap().len());
+        max_reports = max_reports.max(m.reports().unwrap().len());
+    }
+    let fell = on_ground_at_snapshot - on_ground(&s.world);
+    assert!(
+        diverged,
+        "{kind:?} {mode:?}: a modifier without the saved state did not diverge"
+    );
+    // Contacts appeared and disappeared after the restore.
+    assert!(
+        min_reports < max_reports,
+        "{kind:?} {mode:?}: contacts {min_reports}..{max_reports}"
+    );
+    assert!(
+        fell >= 1,
+        "{kind:?} {mode:?}: no box left the ground after the snapshot"
+    );
+    assert!(m.state_capacity() >= capacity_before);
+    assert_eq!(m.active_contacts(), m_file.active_contacts());
+    assert!(m.totals().unwrap().dissipated_energy > 0.0);
+    eprintln!(
+        "{kind:?} {mode:?}: {contacts_at_snapshot} contacts at the snapshot ({} bytes), \
+         {min_reports}..{max_reports} reported after, {fell} boxes fell, identical over {AFTER} steps",
+        bytes.len()
+    );
+}
+
+#[test]
+fn ep_time_resolved_vibration_resumes_bit_identically() {
+    run_case(Kind::Ep, VibrationMode::TimeResolved);
+}
+
+#[test]
+fn ep_averaged_vibration_resumes_bit_identically() {
+    run_case(Kind::Ep, VibrationMode::Averaged);
+}
+
+#[test]
+fn phys_time_resolved_vibration_resumes_bit_identically() {
+    run_case(Kind::Phys, VibrationMode::TimeResolved);
+}
+
+#[test]
+fn phys_averaged_vibration_resumes_bit_identically() {
+    run_case(Kind::Phys, VibrationMode::Averaged);
+}
+
+#[test]
+fn regul_time_resolved_vibration_resumes_bit_identically() {
+    run_case(Kind::Regul, VibrationMode::TimeResolved);
+}
+
+#[test]
+fn regul_averaged_vibration_resumes_bit_identically() {
+    run_case(Kind::Regul, VibrationMode::Averaged);
+}
+
+/// A snapshot with live contacts, free slots and every kind of table: taken at the first step
+/// after 100 at which a contact has vanished and left its slot free.
+fn busy_snapshot() -> (Vec<u8>, StickSlipSnapshot, PhysicsWorld) {
+    let mut s = scene();
+    let mut m = modifier(Kind::Ep, VibrationMode::Averaged, &mut s);
+    let mut k = 0;
+    while k < 100 || m.state_capacity() == m.active_contacts() {
+        step(&mut s.world, &s.bodies, &mut m, k);
+        k += 1;
+        assert!(k < 3000, "no contact vanished");
+    }
+    assert!(m.active_contacts() > 0);
+    let bytes = world_bytes(&s.world, &m);
+    (bytes, m.snapshot(), s.world)
+}
+
+/// Deterministic pseudo-random numbers (xorshift).
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+}
+
+fn load_and_restore(bytes: &[u8]) -> Result<(PhysicsWorld, StickSlip<()>), SnapshotError> {
+    WorldSnapshot::load(bytes)?.restore(())
+}
+
+#[test]
+fn garbage_truncated_and_mutated_bytes_are_errors_not_panics() {
+    let (bytes, _, _) = busy_snapshot();
+    assert!(load_and_restore(&bytes).is_ok());
+    // Not a snapshot at all.
+    assert!(matches!(
+        load_and_restore(&[]),
+        Err(SnapshotError::NotASnapshot)
+    ));
+    assert!(matches!(
+        load_and_restore(b"{\"world\": 1}"),
+        Err(SnapshotError::NotASnapshot)
+    ));
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    for len in [13, 14, 100, 5000] {
+        let mut g: Vec<u8> = (0..len).map(|_| rng.next() as u8).collect();
+        assert!(load_and_restore(&g).is_err());
+        g[..13].copy_from_slice(&bytes[..13]); // a valid header, garbage after it
+        assert!(load_and_restore(&g).is_err(), "garbage of {len} bytes");
+    }
+    // Wrong version and kind.
+    let mut v = bytes.clone();
+    v[8] = 99;
+    assert!(matches!(
+        load_and_restore(&v),
+        Err(SnapshotError::UnsupportedVersion { found: 99, .. })
+    ));
+    let mut v = bytes.clone();
+    v[12] = 0;
+    assert!(matches!(
+        load_and_restore(&v),
+        Err(SnapshotError::WrongKind { .. })
+    ));
+    assert!(matches!(
+        StickSlipSnapshot::load(bytes.as_slice()),
+        Err(SnapshotError::WrongKind { .. })
+    ));
+    // Trailing bytes.
+    let mut v = bytes.clone();
+    v.push(0);
+    assert!(load_and_restore(&v).is_err());
+    // Every truncation is an error.
+    let cuts = 300;
+    for i in 0..cuts {
+        let len = (bytes.len() - 1) * i / cuts;
+        assert!(
+            load_and_restore(&bytes[..len]).is_err(),
+            "truncated to {len} of {} bytes",
+            bytes.len()
+        );
+    }
+    // Mutations: an error, or a snapshot that passed every check; never a panic.
+    let (mut errors, mut accepted) = (0, 0);
+    for _ in 0..600 {
+        let mut v = bytes.clone();
+        let flips = 1 + rng.next() % 4;
+        for _ in 0..flips {
+            let at = 13 + (rng.next() as usize) % (v.len() - 13);
+            v[at] ^= 1 << (rng.next() % 8);
+        }
+        match load_and_restore(&v) {
+            Ok(_) => accepted += 1,
+            Err(_) => errors += 1,
+        }
+    }
+    eprintln!("mutated snapshots: {errors} rejected, {accepted} accepted (a flipped value)");
+    assert!(errors > 0);
+}
+
+/// An edit of a snapshot's JSON form.
+type Edit = Box<dyn FnOnce(&mut serde_json::Value)>;
+
+/// The modifier's snapshot as JSON, edited by `edit`, and restored against `colliders`.
+fn restore_edited(
+    snapshot: &StickSlipSnapshot,
+    colliders: &ColliderSet,
+    edit: impl FnOnce(&mut serde_json::Value),
+) -> Result<StickSlip<()>, String> {
+    let mut json = serde_json::to_value(snapshot).unwrap();
+    edit(&mut json);
+    let snap: StickSlipSnapshot =
+        serde_json::from_value(json).map_err(|e| format!("decode: {e}"))?;
+    StickSlip::restore(&snap, colliders, ()).map_err(|e| e.to_string())
+}
+
+#[test]
+fn inconsistent_snapshot_data_is_rejected() {
+    let (_, snap, world) = busy_snapshot();
+    let cs = &world.colliders;
+    // The unedited snapshot restores through JSON as well.
+    restore_edited(&snap, cs, |_| {}).unwrap();
+    let json = serde_json::to_value(&snap).unwrap();
+    let slots = json["contacts"]["slots"].as_array().unwrap();
+    let free_slot = slots.iter().position(|s| s["record"].is_null());
+    let free_slot = free_slot.expect("the busy snapshot has free slots");
+    let (live_slot, live) = slots
+        .iter()
+        .enumerate()
+        .find(|(_, s)| !s["record"].is_null())
+        .unwrap();
+    let handle = |i: &serde_json::Value| serde_json::json!({"index": i, "generation": 0});
+    // A key-map entry for the live record's pair.
+    let key = serde_json::json!({
+        "c1": handle(&live["record"]["c1"]),
+        "c2": handle(&live["record"]["c2"]),
+        "part": {"Subshapes": [3, 4]},
+        "slot": live_slot,
+    });
+    let push_key = move |edit: fn(&mut serde_json::Value)| -> Edit {
+        let mut k = key.clone();
+        edit(&mut k);
+        Box::new(move |j| j["contacts"]["keys"].as_array_mut().unwrap().push(k))
+    };
+    // The entry itself is consistent.
+    restore_edited(&snap, cs, push_key(|_| {})).unwrap();
+    let cases: Vec<(&str, Edit)> = vec![
+        (
+            "contact store",
+            push_key(|k| k["slot"] = 4_000_000_000u32.into()),
+        ),
+        (
+            "contact store",
+            Box::new(move |j| {
+                j["contacts"]["keys"]
+                    .as_array_mut()
+                    .unwrap()
+                    .push(serde_json::json!({
+                        "c1": {"index": 0, "generation": 0},
+                        "c2": {"index": 1, "generation": 0},
+                        "part": "Whole",
+                        "slot": free_slot,
+                    }));
+            }),
+        ),
+        (
+            "contact store",
+            push_key(|k| k["c1"]["index"] = (k["c1"]["index"].as_u64().unwrap() + 1).into()),
+        ),
+        (
+            "contact store",
+            Box::new({
+                let twice = push_key(|_| {});
+                let again = push_key(|k| k["part"] = serde_json::json!({"Cluster": [0, 50, 0]}));
+                move |j| {
+                    twice(j);
+                    again(j);
+                }
+            }),
+        ),
+        (
+            "contact state",
+            Box::new(|j| {
+                let slots = j["contacts"]["slots"].as_array_mut().unwrap();
+                let live = slots.iter_mut().find(|s| !s["record"].is_null()).unwrap();
+                live["record"]["force"][0] = 1e39.into(); // f32 infinity
+            }),
+        ),
+        (
+            "contact state",
+            Box::new(|j| {
+                let slots = j["contacts"]["slots"].as_array_mut().unwrap();
+                let live = slots.iter_mut().find(|s| !s["record"].is_null()).unwrap();
+                live["record"]["regime"] = 7.into();
+            }),
+        ),
+        (
+            "stiffness_time",
+            Box::new(|j| j["config"]["stiffness_time"] = (-1.0).into()),
+        ),
+        (
+            "frequency",
+            Box::new(|j| j["vibrations"][0]["value"]["frequency"] = (-1.0).into()),
+        ),
+        (
+            "decode",
+            Box::new(|j| j["default_material"]["law"]["mu_ba"] = (-0.5).into()),
+        ),
+        (
+            "normalized",
+            Box::new(|j| {
+                j["vibrations"][1]["value"]["waveform"]["normalized-table"][0] = 5.0.into()
+            }),
+        ),
+        ("clock", Box::new(|j| j["clock"]["dt"] = (-1.0).into())),
+        (
+            "order",
+            Box::new(|j| {
+                let v = j["materials"].as_array_mut().unwrap();
+                let e = v[0].clone();
+                v.push(e);
+            }),
+        ),
+    ];
+    for (what, edit) in cases {
+        let err = restore_edited(&snap, cs, edit)
+            .err()
+            .unwrap_or_else(|| panic!("accepted an edit of {what}"));
+        assert!(err.contains(what), "{what}: {err}");
+    }
+    // A handle whose index no collider set holds allocates nothing and is dropped.
+    let m = restore_edited(&snap, cs, |j| {
+        j["materials"][0]["collider"]["index"] = (u32::MAX - 1).into();
+        j["vibrations"][1]["collider"]["index"] = (u32::MAX - 1).into();
+    })
+    .unwrap();
+    assert!(
+        m.vibration(ColliderHandle::from_raw_parts(u32::MAX - 1, 0))
+            .is_none()
+    );
+}
+
+#[test]
+fn closure_waveforms_snapshot_in_memory_but_not_to_a_file() {
+    let mut s = scene();
+    let mut m = modifier(Kind::Ep, VibrationMode::TimeResolved, &mut s);
+    let w = Waveform::from_fn(|x| (std::f64::consts::TAU * x).sin().powi(3)).unwrap();
+    let src = VibrationSource::new(
+        VibrationDirection::Normal,
+        Amplitude::Ratio(0.3),
+        2.0,
+        w,
+        0.0,
+        VibrationMode::TimeResolved,
+    )
+    .unwrap();
+    m.set_vibration(s.ground, src);
+    for k in 0..30 {
+        step(&mut s.world, &s.bodies, &mut m, k);
+    }
+    let snap = m.snapshot();
+    let restored = StickSlip::restore(&snap, &s.world.colliders, *m.inner()).unwrap();
+    assert_eq!(
+        restored.vibration(s.ground).unwrap().signal(0.37).to_bits(),
+        m.vibration(s.ground).unwrap().signal(0.37).to_bits()
+    );
+    let err = WorldSnapshot::save_from(&s.world, &m, Vec::new()).unwrap_err();
+    assert!(matches!(err, SnapshotError::Encode(_)), "{err}");
+}
+
+/// Hundreds of contacts, so that with rapier's `parallel` feature the hook runs on several
+/// threads (rapier hands pairs to its workers in blocks of 64) and new contacts take their
+/// slots in whatever order the threads reach them: the resumed run must still be identical.
+#[test]
+fn hundreds_of_contacts_resume_bit_identically() {
+    const ROWS: usize = 14;
+    let build = || {
+        let mut world = PhysicsWorld::default();
+        let ground = world.insert_collider(ColliderBuilder::cuboid(4.0, 0.1, 4.0), None);
+        let floor = world.insert_collider(
+            ColliderBuilder::cuboid(60.0, 0.1, 60.0).translation(Vector::new(0.0, -3.0, 0.0)),
+            None,
+        );
+        let mut bodies = Vec::new();
+        for i in 0..ROWS * ROWS {
+            let (x, z) = ((i % ROWS) as f32, (i / ROWS) as f32);
+            let (b, _) = world.insert(
+                RigidBodyBuilder::dynamic()
+                    .translation(Vector::new(
+                        -3.6 + 0.55 * x,
+                        0.26 + 0.02 * z,
+                        -3.6 + 0.55 * z,
+                    ))
+                    .can_sleep(i % 5 == 0),
+                ColliderBuilder::cuboid(0.15, 0.15, 0.15).density(800.0),
+            );
+            bodies.push(b);
+        }
+        (world, ground, floor, bodies)
+    };
+    let (mut world, ground, floor, bodies) = build();
+    let threads = ThreadsSeen::default();
+    // The user's hook runs where the user flags it.
+    for h in [ground, floor] {
+        world.colliders[h].set_active_hooks(ActiveHooks::MODIFY_SOLVER_CONTACTS);
+    }
+    let mut m = StickSlip::with_hooks(FrictionMaterial::new(law(Kind::Ep)), threads.clone())
+        .with_read_back(stickslip_rapier::ReadBack::Contacts);
+    m.attach(&mut world.colliders, ground, None);
+    m.attach(&mut world.colliders, floor, None);
+    let source = VibrationSource::new(
+        VibrationDirection::Normal,
+        Amplitude::Ratio(0.3),
+        3.0,
+        Waveform::SawtoothRight,
+        0.0,
+        VibrationMode::TimeResolved,
+    )
+    .unwrap();
+    m.set_vibration(ground, source);
+    let push = |world: &mut PhysicsWorld, k: usize| {
+        for (i, b) in bodies.iter().enumerate() {
+            let body = &mut world.bodies[*b];
+            let mass = body.mass();
+            let phase = k as f32 * 0.03 + i as f32 * 0.37;
+            // Drifting outward (edge boxes slide off), with hops.
+            let out = if i % ROWS < ROWS / 2 { -0.12 } else { 0.12 };
+            let fx = mass * 9.81 * (out + 0.52 * phase.sin());
+            let lift = if (k + 7 * i) % 250 < 10 { 14.0 } else { 0.0 };
+            body.reset_forces(false);
+            body.add_force(Vector::new(fx, mass * lift, 0.3 * fx), true);
+        }
+    };
+    let bits = |world: &PhysicsWorld, m: &StickSlip<ThreadsSeen>| {
+        let mut out = Vec::new();
+        for b in &bodies {
+            let b = &world.bodies[*b];
+            let p = b.position();
+            for v in [p.translation.to_array(), b.linvel().to_array()] {
+                out.extend(v.map(|x| x.to_bits() as u64));
+            }
+            out.extend(p.rotation.to_array().map(|x| x.to_bits() as u64));
+        }
+        for r in m.reports().unwrap() {
+            out.extend(report_bits(r));
+        }
+        out.extend(totals_bits(&m.totals().unwrap()));
+        out
+    };
+    for k in 0..200 {
+        push(&mut world, k);
+        m.step(&mut world);
+    }
+    let at_snapshot = m.active_contacts();
+    assert!(at_snapshot >= 150, "{at_snapshot} contacts");
+    let mut bytes = Vec::new();
+    WorldSnapshot::save_from(&world, &m, &mut bytes).unwrap();
+    let (mut w2, mut m2) = WorldSnapshot::load(bytes.as_slice())
+        .unwrap()
+        .restore(threads.clone())
+        .unwrap();
+    let capacity = m.state_capacity();
+    let pairs = |m: &StickSlip<ThreadsSeen>| {
+        m.reports()
+            .unwrap()
+            .iter()
+            .map(|r| (r.collider1, r.collider2))
+            .collect::<std::collections::HashSet<_>>()
+    };
+    let before = pairs(&m);
+    let mut new_pairs = std::collections::HashSet::new();
+    let (mut lo, mut hi) = (usize::MAX, 0);
+    for k in 200..200 + AFTER {
+        push(&mut world, k);
+        push(&mut w2, k);
+        m.step(&mut world);
+        m2.step(&mut w2);
+        assert!(bits(&world, &m) == bits(&w2, &m2), "differs at step {k}");
+        lo = lo.min(m.reports().unwrap().len());
+        hi = hi.max(m.reports().unwrap().len());
+        new_pairs.extend(pairs(&m).difference(&before).copied());
+    }
+    // Contacts come and go after the restore, and pairs the snapshot never saw take state.
+    assert!(
+        lo < hi && !new_pairs.is_empty(),
+        "{lo}..{hi}, {} new",
+        new_pairs.len()
+    );
+    let n_threads = threads.0.lock().unwrap().len();
+    eprintln!(
+        "{at_snapshot} contacts at the snapshot ({} bytes), {lo}..{hi} reported after, \
+         {} new pairs, slots {capacity} -> {}, hook ran on {n_threads} thread(s): identical over {AFTER} steps",
+        bytes.len(),
+        new_pairs.len(),
+        m.state_capacity()
+    );
+    #[cfg(feature = "parallel")]
+    assert!(n_threads >= 2, "the hook ran on {n_threads} thread(s)");
+}
+
+/// Inner hooks recording the threads the contact hook runs on.
+#[derive(Clone, Default)]
+struct ThreadsSeen(
+    std::sync::Arc<std::sync::Mutex<std::collections::HashSet<std::thread::ThreadId>>>,
+);
+
+impl PhysicsHooks for ThreadsSeen {
+    fn modify_solver_contacts(&self, _: &mut ContactModificationContext) {
+        if let Ok(mut seen) = self.0.lock() {
+            seen.insert(std::thread::current().id());
+        }
+    }
+}
