@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The bevy examples in a real window under Xvfb (software Vulkan). bevy_rapier apps with
-# stickslip (crate stickslip-bevy): `vibrating_conveyor` renders FRAMES frames and saves the
+# stickslip (crate stickslip-bevy-rapier): `vibrating_conveyor` renders FRAMES frames and saves the
 # window to OUT; `view` opens scenarios/incline.toml the same way (saved beside OUT as
 # *_view.png); `bevy_elliptical_drive` likewise (*_drive.png). The avian app (crate stickslip-avian):
 # `avian_conveyor` after 120 frames (4 s: its vibrating trough's parts are past their start-up

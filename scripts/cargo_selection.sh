@@ -17,7 +17,7 @@
 # unstable in cargo 1.95.
 
 # Features of the default selection.
-STICKSLIP_FEATURES="stickslip-bevy/window,stickslip-bevy/scenario,stickslip-bevy/debug,stickslip-avian/window,stickslip-avian/debug"
+STICKSLIP_FEATURES="stickslip-bevy-rapier/window,stickslip-bevy-rapier/scenario,stickslip-bevy-rapier/debug,stickslip-avian/window,stickslip-avian/debug"
 # The same with rapier's multi-threaded narrow phase and solver in the 3D and 2D adapters.
 STICKSLIP_PARALLEL_FEATURES="$STICKSLIP_FEATURES,stickslip/parallel,stickslip-fixtures/parallel,stickslip-rapier2d/parallel"
 export STICKSLIP_FEATURES STICKSLIP_PARALLEL_FEATURES

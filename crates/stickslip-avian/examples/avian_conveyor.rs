@@ -623,12 +623,11 @@ fn hud(
         "0          (vibration off: EP holds)".into()
     };
     let mut regimes = [0usize; 3];
-    for c in &contacts.0 {
+    for c in contacts.0.iter().filter(|c| !c.reset) {
         match c.regime {
-            Some(Regime::Sticking) => regimes[0] += 1,
-            Some(Regime::StickSlip) => regimes[1] += 1,
-            Some(Regime::Sliding) => regimes[2] += 1,
-            None => {}
+            Regime::Sticking => regimes[0] += 1,
+            Regime::StickSlip => regimes[1] += 1,
+            Regime::Sliding => regimes[2] += 1,
         }
     }
     text.0 = format!(

@@ -1,8 +1,8 @@
 //! Quick start (README) for avian3d: a box on a slope of tan θ = 0.45 with avian's own
 //! `Friction::new(0.4).with_static_coefficient(0.5)`. avian alone reads only the dynamic
 //! coefficient and lets the box slide; with `StickSlipAvianPlugin` the static coefficient is
-//! real and the box holds, creeping as avian's own hold at μ 0.5 does (avian's friction is
-//! solved in soft substeps). Headless: 2 s of simulation, then it prints how far the box went.
+//! real and the box holds, without the creep of avian's own hold at μ 0.5. Headless: 2 s of
+//! simulation, then it prints how far the box went.
 //!
 //! `cargo run --release -p stickslip-avian --example quickstart_avian`
 use avian3d::prelude::*;

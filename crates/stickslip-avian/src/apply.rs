@@ -7,7 +7,6 @@
 //! law sees is the relative velocity of the touching material points, ġ = v₂ − v₁ + the
 //! manifold's tangent velocity (what the app's hooks set, plus the `SurfaceVelocity`s).
 
-use crate::components::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
 use crate::key::{ContactKey, Part};
 use crate::pair_law::{PairLaws, Side, side};
 use crate::plugin::StickSlipAvianConfig;
@@ -17,6 +16,7 @@ use avian3d::dynamics::rigid_body::sleeping::SleepTimer;
 use avian3d::prelude::*;
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
+use stickslip_bevy::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
 use stickslip_core::contact::{ContactInput, TangentBasis, step_contact};
 use stickslip_core::law::{Coulomb, Law};
 
@@ -226,7 +226,7 @@ pub(crate) fn apply(
                 },
             );
             record.tick = tick;
-            record.slip_speed = (slip[0].hypot(slip[1])) as f32;
+            record.slip = Vec3::from_array(basis.lift(slip));
             record.point = manifold.points.iter().map(|p| p.point).sum::<Vec3>() / points;
             record.normal = n;
             manifold.friction = record.state.limit;

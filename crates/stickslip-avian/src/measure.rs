@@ -1,18 +1,93 @@
-//! Right after avian's solver stored its impulses: each stepped manifold's normal force and
-//! friction from the solver's own constraints, the read-back, and the records of contacts
-//! that are gone.
+//! The solve of each stepped manifold, from avian's own constraints: before the substeps its
+//! friction warm start is carried into the tick's tangent basis (`carry_warm_start`), after
+//! each substep its impulses are added up (`accumulate`), and after the solver stored its
+//! impulses the tick's normal force and friction make the read-back (`measure`), and the
+//! records of contacts that are gone are dropped.
 //!
-//! The constraint keeps the last substep's accumulated impulses and the tick's tangent basis
-//! (`tangent1`, `tangent1 × normal`); the manifold in avian's contact graph keeps only the
-//! impulses, so the direction of the friction is read here, not at the next tick.
+//! avian keeps only the current substep's accumulated impulses on a constraint, and a point's
+//! friction impulse as coordinates in the tick's tangent basis (`tangent1`,
+//! `tangent1 × normal`), which it picks again every tick from the bodies' relative velocity.
+//! For a held contact that velocity is solver noise, so the basis turns at random from tick
+//! to tick, and avian's warm start (last tick's coordinates, applied in the new basis) pushes
+//! the held friction off its direction: the hold creeps downhill by millimetres a second.
+//! Carried over as the world impulse it was (as rapier keeps it), the warm start holds the
+//! contact still.
 
-use crate::report::{AvianContact, RegimeChanged, StickSlipContacts};
-use crate::store::{ContactStore, Measured};
+use crate::store::{ContactStore, Measured, Solved, TickForces, TickImpulses};
 use avian3d::dynamics::solver::constraint_graph::ConstraintGraph;
+use avian3d::dynamics::solver::contact::ContactConstraint;
 use avian3d::prelude::*;
 use bevy::prelude::*;
+use stickslip_bevy::{ContactReport, RegimeChanged, StickSlipContacts};
 use stickslip_core::contact::REGIME_NONE;
 use stickslip_core::law::Regime;
+
+/// The constraint's normal impulse and friction impulse on body 2 (world) as they stand.
+fn impulses(c: &ContactConstraint) -> (f32, Vec3) {
+    let t2 = c.tangent1.cross(c.normal);
+    c.points.iter().fold((0.0, Vec3::ZERO), |(n, t), p| {
+        let lt = p.tangent_part.as_ref().map_or(Vec2::ZERO, |t| t.impulse);
+        (n + p.normal_part.impulse, t + lt.x * c.tangent1 + lt.y * t2)
+    })
+}
+
+/// Before the substeps: finds this tick's constraints of the stepped manifolds and turns
+/// each point's friction warm start from last tick's basis into this tick's, keeping it the
+/// same world impulse (less any part along the new normal).
+pub(crate) fn carry_warm_start(
+    mut constraints: ResMut<ConstraintGraph>,
+    mut store: ResMut<ContactStore>,
+) {
+    let store = &mut *store;
+    store.solved.clear();
+    if store.stepped.is_empty() {
+        return;
+    }
+    for (color, graph_color) in constraints.colors.iter_mut().enumerate() {
+        for (index, c) in graph_color.contact_constraints.iter_mut().enumerate() {
+            let Some(&key) = store.stepped.get(&(c.contact_id.0, c.manifold_index)) else {
+                continue;
+            };
+            let Some(record) = store.records.get(&key) else {
+                continue;
+            };
+            store.solved.push(Solved {
+                color,
+                index,
+                key,
+                impulses: TickImpulses::default(),
+            });
+            let Some((t1_old, n_old)) = record.basis else {
+                continue;
+            };
+            let t2_old = t1_old.cross(n_old);
+            let (t1, n) = (c.tangent1, c.normal);
+            let t2 = t1.cross(n);
+            for part in c.points.iter_mut().filter_map(|p| p.tangent_part.as_mut()) {
+                let w = part.impulse.x * t1_old + part.impulse.y * t2_old;
+                let w = w - n * n.dot(w);
+                part.impulse = Vec2::new(w.dot(t1), w.dot(t2));
+            }
+        }
+    }
+}
+
+/// After each substep's relax pass: its impulses added to the tick's.
+pub(crate) fn accumulate(constraints: Res<ConstraintGraph>, mut store: ResMut<ContactStore>) {
+    for s in store.solved.iter_mut() {
+        let Some(c) = constraints
+            .colors
+            .get(s.color)
+            .and_then(|g| g.contact_constraints.get(s.index))
+        else {
+            continue;
+        };
+        let (normal, friction) = impulses(c);
+        s.impulses.normal += normal;
+        s.impulses.friction += friction;
+        s.impulses.last_normal = normal;
+    }
+}
 
 /// Measures the stepped manifolds, publishes them and forgets the contacts that are gone.
 #[allow(clippy::too_many_arguments)]
@@ -28,33 +103,41 @@ pub(crate) fn measure(
 ) {
     let store = &mut *store;
     contacts.0.clear();
-    let h = time.delta_secs_f64() / substeps.0.max(1) as f64;
-    if h > 0.0 && !store.stepped.is_empty() {
-        for color in &constraints.colors {
-            for c in &color.contact_constraints {
-                let Some(key) = store.stepped.get(&(c.contact_id.0, c.manifold_index)) else {
-                    continue;
-                };
-                let Some(record) = store.records.get_mut(key) else {
-                    continue;
-                };
-                let t2 = c.tangent1.cross(c.normal);
-                let (normal, tangent) = c.points.iter().fold((0.0f32, Vec3::ZERO), |(n, t), p| {
-                    let lt = p.tangent_part.as_ref().map_or(Vec2::ZERO, |t| t.impulse);
-                    (n + p.normal_part.impulse, t + lt.x * c.tangent1 + lt.y * t2)
-                });
-                // The impulse on body 2 is +λ_t: μ⃗ = −Σλ_t / Σλ_n.
-                let mu = if normal > 0.0 {
-                    (-tangent / normal).to_array()
-                } else {
-                    [0.0; 3]
-                };
-                record.measured = Measured {
-                    normal_force: normal as f64 / h,
-                    mu,
-                    normal_impulse: normal,
-                };
-            }
+    let dt = time.delta_secs_f64();
+    let h = dt / substeps.0.max(1) as f64;
+    if dt > 0.0 {
+        for s in &store.solved {
+            let Some(c) = constraints
+                .colors
+                .get(s.color)
+                .and_then(|g| g.contact_constraints.get(s.index))
+            else {
+                continue;
+            };
+            let Some(record) = store.records.get_mut(&s.key) else {
+                continue;
+            };
+            // The law's measurement: the last substep (restitution's share included).
+            let (normal, friction) = impulses(c);
+            // The impulse on body 2 is +λ_t: μ⃗ = −Σλ_t / Σλ_n.
+            let mu = if normal > 0.0 {
+                (-friction / normal).to_array()
+            } else {
+                [0.0; 3]
+            };
+            record.measured = Measured {
+                normal_force: normal as f64 / h,
+                mu,
+                normal_impulse: normal,
+            };
+            // The read-back: the whole tick. Restitution, after the substeps, adds to the
+            // last substep's normal impulses.
+            let tick_normal = s.impulses.normal + (normal - s.impulses.last_normal);
+            record.tick_forces = TickForces {
+                normal_force: tick_normal.max(0.0) as f64 / dt,
+                friction: s.impulses.friction / dt as f32,
+            };
+            record.basis = Some((c.tangent1, c.normal));
         }
     }
     let tick = store.tick;
@@ -63,26 +146,32 @@ pub(crate) fn measure(
             continue;
         }
         let regime = record.state.regime();
-        let f_n = record.measured.normal_force;
-        contacts.0.push(AvianContact {
-            entity1: key.collider1,
-            entity2: key.collider2,
-            regime,
-            normal_force: f_n,
-            friction: -Vec3::from_array(record.measured.mu) * f_n as f32,
-            limit: record.state.limit,
-            slip_speed: record.slip_speed,
-            point: record.point,
-            normal: record.normal,
-        });
+        let f_n = record.tick_forces.normal_force;
+        let friction = record.tick_forces.friction;
+        let mut report = ContactReport::new(key.collider1, key.collider2);
+        report.point = record.point.to_array();
+        report.normal = record.normal.to_array();
+        report.regime = regime.unwrap_or(Regime::Sticking);
+        report.mu = if f_n > 0.0 {
+            stickslip_core::contact::length(record.state.force) as f64 / f_n
+        } else {
+            0.0
+        };
+        report.limit = record.state.limit as f64;
+        report.normal_force = f_n;
+        report.friction_force = friction.to_array();
+        report.slip_velocity = record.slip.to_array();
+        report.dissipated_power = (-(friction.dot(record.slip)) as f64).max(0.0);
+        report.reset = regime.is_none();
+        contacts.0.push(report);
         if let Some(to) = regime
             && record.published != to.code()
         {
             let from =
                 (record.published != REGIME_NONE).then(|| Regime::from_code(record.published));
             changed.write(RegimeChanged {
-                entity1: key.collider1,
-                entity2: key.collider2,
+                collider1: key.collider1,
+                collider2: key.collider2,
                 from,
                 to,
             });

@@ -8,10 +8,10 @@
 //! - A side with a stickslip material brings its law; a plain side brings "Phys" (or Coulomb
 //!   at μ_k); the two laws combine with core's `Law::combine` under avian's rule of the pair.
 
-use crate::components::StickSlipFriction;
 use avian3d::prelude::{CoefficientCombine, Friction};
 use bevy::platform::collections::HashMap;
 use bevy::prelude::*;
+use stickslip_bevy::StickSlipFriction;
 use stickslip_core::FrictionMaterial;
 use stickslip_core::law::{CombineRule, Coulomb, Law, Physical};
 use stickslip_core::sliding_curve::Curve;

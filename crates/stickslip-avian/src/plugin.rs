@@ -1,16 +1,17 @@
 //! The plugin: its resources and where its systems run in avian's `PhysicsSchedule`.
 
 use crate::apply::apply;
-use crate::components::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
-use crate::measure::measure;
+use crate::measure::{accumulate, carry_warm_start, measure};
 use crate::pair_law::PairLaws;
-use crate::report::{RegimeChanged, StickSlipContacts};
 use crate::store::ContactStore;
 use avian3d::collision::narrow_phase::NarrowPhaseSystems;
 use avian3d::dynamics::solver::islands::WakeBody;
-use avian3d::dynamics::solver::schedule::SolverSystems;
+use avian3d::dynamics::solver::schedule::{SolverSystems, SubstepSchedule, SubstepSolverSystems};
 use avian3d::prelude::*;
 use bevy::prelude::*;
+use stickslip_bevy::{
+    RegimeChanged, StickSlipContacts, StickSlipFriction, StickSlipVibration, SurfaceVelocity,
+};
 use stickslip_core::FrictionMaterial;
 use stickslip_core::law::{Coulomb, Law};
 use stickslip_core::sliding_curve::Curve;
@@ -84,9 +85,14 @@ impl Plugin for StickSlipAvianPlugin {
                 (forget_changed_materials, apply)
                     .chain()
                     .in_set(StickSlipAvianSystems::Apply),
+                carry_warm_start.in_set(SolverSystems::PreSubstep),
                 measure.in_set(StickSlipAvianSystems::Measure),
                 wake_driven.in_set(PhysicsStepSystems::First),
             ),
+        )
+        .add_systems(
+            SubstepSchedule,
+            accumulate.after(SubstepSolverSystems::Relax),
         );
     }
 }

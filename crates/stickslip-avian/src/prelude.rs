@@ -1,6 +1,6 @@
 //! What an avian app names: `use stickslip_avian::prelude::*;`.
 pub use crate::{
-    AvianContact, RegimeChanged, StickSlipAvianPlugin, StickSlipContacts, StickSlipFriction,
+    ContactReport, RegimeChanged, StickSlipAvianPlugin, StickSlipContacts, StickSlipFriction,
     StickSlipVibration, SurfaceVelocity,
 };
 // The core's prelude without `Curve`, which bevy's prelude names too (bevy_math's `Curve`):

@@ -5,7 +5,10 @@ use bevy::platform::collections::HashMap;
 use bevy::prelude::*;
 use stickslip_core::contact::{ContactState, REGIME_NONE, World};
 
-/// What the solver did at a contact in its last solve.
+/// What the solver did at a contact in its last solve, for the law: the contact as it is at
+/// the end of the tick (its last substep), where a saturated friction means it slips now. A
+/// tick's sums would count the braking of a landing (a box put down on a slope slides for a
+/// few ticks before it holds) as the force the contact carries.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct Measured {
     /// Normal force (N): the last substep's accumulated normal impulse over its length.
@@ -16,15 +19,51 @@ pub(crate) struct Measured {
     pub normal_impulse: f32,
 }
 
+/// What the solver did at a contact over the whole tick, for the read-back: all substeps'
+/// impulses and restitution's, over the tick.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct TickForces {
+    /// Normal force (N).
+    pub normal_force: f64,
+    /// Friction force on body 2 (N, world).
+    pub friction: Vec3,
+}
+
+/// Sums over the substeps of the tick being solved.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct TickImpulses {
+    /// Σ normal impulse (N·s).
+    pub normal: f32,
+    /// Σ friction impulse on body 2 (N·s, world).
+    pub friction: Vec3,
+    /// The last substep's normal impulse, before restitution adds to it.
+    pub last_normal: f32,
+}
+
+/// A stepped manifold's constraint in this tick's solve.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Solved {
+    /// Its graph colour and index there.
+    pub color: usize,
+    pub index: usize,
+    pub key: ContactKey,
+    pub impulses: TickImpulses,
+}
+
 /// One contact's record.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Record {
     pub state: ContactState,
     pub measured: Measured,
+    /// The tick's forces, for the read-back.
+    pub tick_forces: TickForces,
+    /// The solver's friction basis of the last solve (`tangent1`, normal), in which avian
+    /// keeps the warm start (see `measure::carry_warm_start`).
+    pub basis: Option<(Vec3, Vec3)>,
     /// The tick it was last stepped in.
     pub tick: u64,
-    /// The slip speed it was stepped with (m/s), for the read-back.
-    pub slip_speed: f32,
+    /// The slip velocity it was stepped with (m/s, world), for the read-back.
+    pub slip: Vec3,
     /// Where it was (the mean of its points, world) and its normal, for the read-back.
     pub point: Vec3,
     pub normal: Vec3,
@@ -37,8 +76,10 @@ impl Default for Record {
         Record {
             state: ContactState::default(),
             measured: Measured::default(),
+            tick_forces: TickForces::default(),
+            basis: None,
             tick: 0,
-            slip_speed: 0.0,
+            slip: Vec3::ZERO,
             point: Vec3::ZERO,
             normal: Vec3::ZERO,
             published: REGIME_NONE,
@@ -53,6 +94,9 @@ pub struct ContactStore {
     pub(crate) records: HashMap<ContactKey, Record>,
     /// This tick's manifolds (avian's contact id and manifold index) and their keys.
     pub(crate) stepped: HashMap<(u32, usize), ContactKey>,
+    /// This tick's solver constraints of stepped manifolds, where they are in avian's
+    /// constraint graph, and their impulses so far.
+    pub(crate) solved: Vec<Solved>,
     pub(crate) tick: u64,
 }
 

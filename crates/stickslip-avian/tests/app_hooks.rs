@@ -31,13 +31,13 @@ fn friction() -> Friction {
 }
 
 /// The contacts stickslip stepped in the last tick between `a` and `b`.
-fn contacts_between(app: &App, a: Entity, b: Entity) -> Vec<stickslip_avian::AvianContact> {
+fn contacts_between(app: &App, a: Entity, b: Entity) -> Vec<stickslip_avian::ContactReport> {
     app.world()
         .get_resource::<StickSlipContacts>()
         .map(|c| {
             c.0.iter()
                 .filter(|c| {
-                    (c.entity1 == a && c.entity2 == b) || (c.entity1 == b && c.entity2 == a)
+                    (c.collider1 == a && c.collider2 == b) || (c.collider1 == b && c.collider2 == a)
                 })
                 .copied()
                 .collect()

@@ -102,7 +102,7 @@ fn contacts_are_drawn_in_their_regimes_colour() {
     assert!(has(&colors, Regime::Sticking), "{} vertices", colors.len());
     assert!(!has(&colors, Regime::Sliding));
     let seen = &app.world().resource::<Seen>().0;
-    assert!(seen.iter().any(|m| (m.entity1 == a || m.entity2 == a)
+    assert!(seen.iter().any(|m| (m.collider1 == a || m.collider2 == a)
         && m.from.is_none()
         && m.to == Regime::Sticking));
     app.world_mut().resource_mut::<Seen>().0.clear();
@@ -118,7 +118,7 @@ fn contacts_are_drawn_in_their_regimes_colour() {
     // It leaves sticking (through stick-slip, as the law breaks away) and ends sliding.
     let of_a: Vec<_> = seen
         .iter()
-        .filter(|m| m.entity1 == a || m.entity2 == a)
+        .filter(|m| m.collider1 == a || m.collider2 == a)
         .collect();
     assert!(
         of_a.first()

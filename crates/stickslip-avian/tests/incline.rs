@@ -1,10 +1,9 @@
 //! On a slope, avian's own `Friction::new(μ_k).with_static_coefficient(μ_s)` becomes real
 //! static friction with the plugin, and so does an elasto-plastic stickslip material.
 //! Invariants, at avian's default 6 solver substeps and at 12: below break-away (tan θ
-//! between μ_k and μ_s) a box put down on the slope holds as firmly as avian holds it with a
-//! coefficient of μ_s — it creeps no more than plain avian's `Friction::new(μ_s)` (avian's
-//! friction is not rigid: its own hold creeps, 0.7 mm in 3 s at tan θ 0.45 and 6 substeps),
-//! and less than 2 cm in 3 s (5.5 mm at tan θ 0.55) — where plain avian with the same `Friction` (which reads only
+//! between μ_k and μ_s) a box put down on the slope holds, moving less than 5 µm in 3 s
+//! (avian's own hold with a coefficient of μ_s creeps 0.7 mm at tan θ 0.45 and 5.5 mm at 0.55,
+//! 6 substeps), where plain avian with the same `Friction` (which reads only
 //! the dynamic coefficient) slides it off; above break-away it slides at the closed form
 //! a = g (sin θ − μ_k cos θ) within 2 %.
 
@@ -18,6 +17,9 @@ use stickslip_core::sliding_curve::Curve;
 
 const MU_K: f32 = 0.4;
 const MU_S: f32 = 0.6;
+/// What a hold may creep in 3 s (m): rapier's stickslip hold creeps 2.5 µm in 10 s; the EP
+/// material's elastic range μ_ba/c is 6 µm.
+const HOLD: f64 = 5e-6;
 
 /// The box's slide along x over 3 s after 0.5 s of settling, and its acceleration over the
 /// last 2 s: with avian's `Friction` (μ_k, μ_s) unless `ep`, or with plain avian's at μ_s
@@ -78,8 +80,8 @@ fn avians_static_coefficient_holds_and_breaks_away() {
             let (held, _) = slide(true, substeps, tan, false);
             let baseline = avians_hold(substeps, tan);
             assert!(
-                held.abs() <= baseline.abs() * 1.1 + 1e-6 && held.abs() < 0.02,
-                "{substeps} substeps, tan θ {tan}: crept {held} m, avian's hold {baseline} m"
+                held.abs() < HOLD,
+                "{substeps} substeps, tan θ {tan}: crept {held} m (avian's own hold {baseline} m)"
             );
             let (plain, _) = slide(false, substeps, tan, false);
             assert!(
@@ -106,8 +108,8 @@ fn an_elasto_plastic_material_holds_and_breaks_away() {
             let (held, _) = slide(true, substeps, tan, true);
             let baseline = avians_hold(substeps, tan);
             assert!(
-                held.abs() <= baseline.abs() * 1.1 + 1e-6 && held.abs() < 0.02,
-                "{substeps} substeps, tan θ {tan}: crept {held} m, avian's hold {baseline} m"
+                held.abs() < HOLD,
+                "{substeps} substeps, tan θ {tan}: crept {held} m (avian's own hold {baseline} m)"
             );
         }
         for tan in [0.65, 0.9] {

@@ -59,7 +59,7 @@ fn drag(w: &Waveform, beta: f64) -> (f64, f64) {
             let vx = velocity(&app, sled).x as f64;
             impulse += mass * (v0 - vx);
             for c in app.world().resource::<StickSlipContacts>().of(sled) {
-                fx += c.friction.x.abs() as f64;
+                fx += c.friction_force[0].abs() as f64;
                 fz += c.normal_force;
             }
         }

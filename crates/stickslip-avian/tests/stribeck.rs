@@ -61,7 +61,7 @@ fn dragged(v: f64, substeps: u32, plain: Option<f32>) -> (f64, f64) {
                 continue;
             };
             for c in contacts.of(sled) {
-                reported += c.friction.length() as f64;
+                reported += Vec3::from(c.friction_force).length() as f64;
                 normal += c.normal_force;
             }
         }

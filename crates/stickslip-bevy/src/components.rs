@@ -1,19 +1,21 @@
-//! The components a bevy_rapier app puts on its colliders to use stickslip.
+//! The components an app puts on its colliders to use stickslip.
 
 use bevy::prelude::*;
-use stickslip_rapier_035::{FrictionMaterial, VibrationSource};
+use stickslip_core::FrictionMaterial;
+use stickslip_core::contact::VibrationSource;
 
-/// Puts a collider under stickslip: its pairs get stickslip's friction, with this material
-/// (`None`: the plugin's default material).
+/// Puts a collider under a stickslip material: its pairs get stickslip's law with this
+/// material (`None`: the plugin's default material) instead of the engine's friction.
 #[derive(Component, Debug, Clone, PartialEq)]
 pub struct StickSlipFriction(pub Option<FrictionMaterial>);
 
-/// A vibration source on a stickslip collider: its contacts feel it (Popov's reduced static
-/// and sliding friction, elliptical drives; see `stickslip_rapier::VibrationSource`).
+/// A vibration source on a collider: its contacts feel it (Popov's reduced static and sliding
+/// friction, elliptical drives; see `stickslip_core::contact::VibrationSource`).
 #[derive(Component, Debug, Clone)]
 pub struct StickSlipVibration(pub VibrationSource);
 
 /// The velocity of a collider's surface relative to its body (a conveyor belt, m/s, world
-/// axes): its contacts' target tangent velocity, on any pair (with or without stickslip).
+/// axes): the target tangent velocity of its contacts, on every pair (with or without a
+/// stickslip material).
 #[derive(Component, Debug, Clone, Copy, PartialEq)]
 pub struct SurfaceVelocity(pub Vec3);

@@ -1,14 +1,13 @@
-//! Contact gizmos (feature `debug`): every stickslip contact of [`crate::StickSlipContacts`] as
-//! a dot coloured by regime (green sticking, orange stick-slip, red sliding), its friction
-//! force as an arrow in that colour and its normal as a white ray. Needs bevy's `GizmoPlugin`;
-//! turns the modifier's contact read-back on.
+//! Contact gizmos (feature `debug`): every contact of [`crate::StickSlipContacts`] as a dot
+//! coloured by regime (green sticking, orange stick-slip, red sliding), its friction force as
+//! an arrow in that colour and its normal as a white ray. Needs bevy's `GizmoPlugin`; the
+//! add-ons read contacts back while this plugin is in the app.
 
-use crate::{StickSlipContacts, StickSlipRapier};
+use crate::StickSlipContacts;
 use bevy::gizmos::GizmoPlugin;
 use bevy::prelude::*;
 use bevy::transform::TransformSystems;
 use stickslip_core::law::Regime;
-use stickslip_rapier_035::ReadBack;
 
 /// Settings of the contact gizmos; toggle them with
 /// `GizmoConfigStore::config_mut::<StickSlipGizmos>().0.enabled`.
@@ -51,11 +50,6 @@ impl Plugin for StickSlipDebugPlugin {
             debug!("stickslip contact gizmos off: no GizmoPlugin in this app");
             return;
         }
-        if let Some(mut state) = app.world_mut().get_resource_mut::<StickSlipRapier>()
-            && state.modifier.read_back() != ReadBack::Contacts
-        {
-            state.modifier.set_read_back(ReadBack::Contacts);
-        }
         // Drawn on top: contacts hide under the parts.
         let config = GizmoConfig {
             depth_bias: -1.0,
@@ -71,23 +65,19 @@ impl Plugin for StickSlipDebugPlugin {
     }
 }
 
-fn draw_contacts(contacts: Res<StickSlipContacts>, mut gizmos: Gizmos<StickSlipGizmos>) {
+fn draw_contacts(contacts: Option<Res<StickSlipContacts>>, mut gizmos: Gizmos<StickSlipGizmos>) {
+    let Some(contacts) = contacts else { return };
     let cfg = gizmos.config_ext.clone();
-    for c in &contacts.0 {
-        let r = &c.report;
-        let p = Vec3::from_array(r.point);
-        let color = regime_color(r.regime);
+    for c in contacts.0.iter().filter(|c| !c.reset) {
+        let p = Vec3::from(c.point);
+        let color = regime_color(c.regime);
         gizmos.sphere(p, cfg.point_radius, color);
-        let f = Vec3::from_array(r.friction_force) * cfg.force_scale;
+        let f = Vec3::from(c.friction_force) * cfg.force_scale;
         if f.length() > 1e-4 {
             gizmos.arrow(p, p + f, color);
         }
         if cfg.normal_length > 0.0 {
-            gizmos.ray(
-                p,
-                Vec3::from_array(r.normal) * cfg.normal_length,
-                Color::WHITE,
-            );
+            gizmos.ray(p, Vec3::from(c.normal) * cfg.normal_length, Color::WHITE);
         }
     }
 }

@@ -11,6 +11,7 @@
 //!   theory of friction under oscillation that the averaged vibration mode evaluates at run
 //!   time (Ψ_w(β), the compliant contact's μ̄ and static band, its self-drive).
 //! - [`contact`]: the per-contact kernel every engine adapter calls, and the vibration sources.
+//! - [`report`]: the contact read-back every engine adapter gives, one type for all.
 //! - [`profile`]: validated piecewise-linear force profiles F(t), such as the seed's Example 1.
 //!
 //! The reference simulators and the rest of Popov's theory (static friction, spring model,
@@ -27,6 +28,7 @@ pub mod material;
 pub mod popov;
 pub mod prelude;
 pub mod profile;
+pub mod report;
 pub mod sliding_curve;
 pub mod switch;
 pub mod vec2;

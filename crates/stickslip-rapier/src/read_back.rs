@@ -47,24 +47,20 @@ pub(crate) fn report(
     );
     let friction = tangential(meas.mu) * -(meas.normal_force as f32);
     let f_n = meas.normal_force;
-    let report = ContactReport {
-        collider1: c1,
-        collider2: c2,
-        point: p.to_array(),
-        normal: n.to_array(),
-        regime: Regime::from_code(rec.state.regime),
-        mu: if f_n > 0.0 {
-            stickslip_core::contact::length(rec.state.force) as f64 / f_n
-        } else {
-            0.0
-        },
-        limit: m.data.friction as f64,
-        normal_force: f_n,
-        friction_force: friction.to_array(),
-        slip_velocity: slip.to_array(),
-        dissipated_power: (-(friction.dot(slip)) as f64).max(0.0),
-        reset: false,
+    let mut report = ContactReport::new(c1, c2);
+    report.point = p.to_array();
+    report.normal = n.to_array();
+    report.regime = Regime::from_code(rec.state.regime);
+    report.mu = if f_n > 0.0 {
+        stickslip_core::contact::length(rec.state.force) as f64 / f_n
+    } else {
+        0.0
     };
+    report.limit = m.data.friction as f64;
+    report.normal_force = f_n;
+    report.friction_force = friction.to_array();
+    report.slip_velocity = slip.to_array();
+    report.dissipated_power = (-(friction.dot(slip)) as f64).max(0.0);
     // Inputs that turned non-finite after the hook ran (the solve itself overflowed).
     let numbers = [
         report.mu,
@@ -87,18 +83,8 @@ pub(crate) fn report(
 
 /// The report of a contact whose inputs were not usable: zeros, flagged.
 fn reset_report(rec: &ContactRecord, c1: ColliderHandle, c2: ColliderHandle) -> ContactReport {
-    ContactReport {
-        collider1: c1,
-        collider2: c2,
-        point: [0.0; crate::report::DIM],
-        normal: [0.0; crate::report::DIM],
-        regime: Regime::Sticking,
-        mu: 0.0,
-        limit: rec.state.limit as f64,
-        normal_force: 0.0,
-        friction_force: [0.0; crate::report::DIM],
-        slip_velocity: [0.0; crate::report::DIM],
-        dissipated_power: 0.0,
-        reset: true,
-    }
+    let mut report = ContactReport::new(c1, c2);
+    report.limit = rec.state.limit as f64;
+    report.reset = true;
+    report
 }

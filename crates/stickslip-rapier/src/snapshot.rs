@@ -604,20 +604,18 @@ impl ReportSnapshot {
         if !finite {
             return Err(invalid("contact report", "a value is not finite"));
         }
-        Ok(ContactReport {
-            collider1: self.collider1.into(),
-            collider2: self.collider2.into(),
-            point: self.point,
-            normal: self.normal,
-            regime: self.regime,
-            mu: self.mu,
-            limit: self.limit,
-            normal_force: self.normal_force,
-            friction_force: self.friction_force,
-            slip_velocity: self.slip_velocity,
-            dissipated_power: self.dissipated_power,
-            reset: self.reset,
-        })
+        let mut r = ContactReport::new(self.collider1.into(), self.collider2.into());
+        r.point = self.point;
+        r.normal = self.normal;
+        r.regime = self.regime;
+        r.mu = self.mu;
+        r.limit = self.limit;
+        r.normal_force = self.normal_force;
+        r.friction_force = self.friction_force;
+        r.slip_velocity = self.slip_velocity;
+        r.dissipated_power = self.dissipated_power;
+        r.reset = self.reset;
+        Ok(r)
     }
 }
 

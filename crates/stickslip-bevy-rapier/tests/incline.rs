@@ -13,7 +13,7 @@ use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy_rapier3d::prelude::*;
 use std::time::Duration;
-use stickslip_bevy::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin};
+use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin};
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 use stickslip_rapier_035::FrictionMaterial;
@@ -114,7 +114,7 @@ const MODES: [TimestepMode; 6] = [
 
 /// The modifier's clock against the simulated time of bevy_rapier's steps.
 fn clock(app: &App) -> f64 {
-    app.world().resource::<StickSlipRapier>().modifier.time()
+    app.world().resource::<StickSlipRapier>().modifier().time()
 }
 
 #[test]
@@ -125,7 +125,7 @@ fn every_rapier_step_is_bracketed_in_every_mode() {
         steps(&mut app, 120);
         let t = clock(&app) - t0;
         println!("{mode:?}: stickslip clock advanced {t:.6} s over 120 frames of {DT:.6} s");
-        assert!(app.world().resource::<StickSlipRapier>().active);
+        assert!(app.world().resource::<StickSlipRapier>().is_active());
         // Interpolated may run one round more or less in a frame (float lag), never drifts.
         assert!(
             (t - 120.0 * DT as f64).abs() <= 1.01 * DT as f64,
@@ -149,7 +149,7 @@ fn holds_below_break_away_in_every_mode() {
         );
         assert!((x1 - x0).abs() <= g_ba, "{mode:?}: moved {} m", x1 - x0);
         let state = app.world_mut().resource_mut::<StickSlipRapier>();
-        assert_eq!(state.modifier.active_contacts(), 1);
+        assert_eq!(state.modifier().active_contacts(), 1);
     }
 }
 
@@ -191,7 +191,7 @@ fn a_hooks_type_other_than_bevy_rapiers_is_refused() {
         .add_plugins(RapierPhysicsPlugin::<NoUserData>::default())
         .add_plugins(StickSlipRapierPlugin::default().with_hooks::<OtherHooks>());
     app.update();
-    assert!(!app.world().resource::<StickSlipRapier>().active);
+    assert!(!app.world().resource::<StickSlipRapier>().is_active());
     // bevy_rapier still steps: a dropped ball falls.
     let ball = app
         .world_mut()
@@ -214,7 +214,7 @@ fn despawning_leaves_no_state() {
     assert_eq!(
         app.world_mut()
             .resource_mut::<StickSlipRapier>()
-            .modifier
+            .modifier()
             .active_contacts(),
         1
     );
@@ -222,7 +222,7 @@ fn despawning_leaves_no_state() {
     steps(&mut app, 2);
     let state = app.world_mut().resource_mut::<StickSlipRapier>();
     assert_eq!(
-        state.modifier.active_contacts(),
+        state.modifier().active_contacts(),
         0,
         "contact state left behind"
     );

@@ -11,8 +11,8 @@
 //! ```
 //! use bevy::prelude::*;
 //! use bevy_rapier3d::prelude::*;
-//! use stickslip_bevy::StickSlipRapierPlugin;
-//! use stickslip_bevy::scenario::{LoadedScenario, Scenario, StickSlipScenarioPlugin, spawn_scenario};
+//! use stickslip_bevy_rapier::StickSlipRapierPlugin;
+//! use stickslip_bevy_rapier::scenario::{LoadedScenario, Scenario, StickSlipScenarioPlugin, spawn_scenario};
 //!
 //! let mut app = App::new();
 //! app.add_plugins((MinimalPlugins, TransformPlugin))
@@ -25,7 +25,6 @@
 //! assert!(!loaded.bodies.is_empty());
 //! ```
 
-use crate::components::{StickSlipFriction, StickSlipVibration};
 use crate::state::StickSlipRapier;
 use bevy::ecs::schedule::{InternedScheduleLabel, ScheduleLabel};
 use bevy::prelude::*;
@@ -34,6 +33,7 @@ use bevy_rapier3d::plugin::context::{
 };
 use bevy_rapier3d::prelude::*;
 use bevy_rapier3d::rapier::dynamics::{CoefficientCombineRule as RapierRule, RigidBodyHandle};
+use stickslip_bevy::{StickSlipFriction, StickSlipVibration};
 use stickslip_scenario_035::spec::{BodyKind, ColliderSpec};
 use stickslip_scenario_035::{Driver, apply_drivers};
 

@@ -4,14 +4,14 @@
 //! Headless (2 s of simulation, then it prints where the box is); the windowed examples are
 //! `vibrating_conveyor` and `bevy_elliptical_drive`.
 //!
-//! `cargo run --release -p stickslip-bevy --example quickstart_bevy`
+//! `cargo run --release -p stickslip-bevy-rapier --example quickstart_bevy`
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy_rapier3d::prelude::*;
 use std::time::Duration;
-use stickslip_bevy::core::law::{EpParams, Law};
-use stickslip_bevy::core::sliding_curve::Curve;
-use stickslip_bevy::{FrictionMaterial, StickSlipFriction, StickSlipRapierPlugin};
+use stickslip_bevy_rapier::core::law::{EpParams, Law};
+use stickslip_bevy_rapier::core::sliding_curve::Curve;
+use stickslip_bevy_rapier::{FrictionMaterial, StickSlipFriction, StickSlipRapierPlugin};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     // c = 1e4 /m, break-away μ_ba 0.5, μ_max 0.55, sliding at 0.4.

@@ -5,7 +5,7 @@ use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy_rapier3d::prelude::*;
 use std::time::Duration;
-use stickslip_bevy::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin};
+use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin};
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 use stickslip_rapier_035::FrictionMaterial;
@@ -85,7 +85,7 @@ pub fn part(app: &mut App, x: f32, law: FrictionMaterial) -> Entity {
 
 /// Simulated time of the bracketed rapier steps (s): the modifier's clock.
 pub fn sim_time(app: &App) -> f64 {
-    app.world().resource::<StickSlipRapier>().modifier.time()
+    app.world().resource::<StickSlipRapier>().modifier().time()
 }
 
 /// Position and velocity of an entity along x.

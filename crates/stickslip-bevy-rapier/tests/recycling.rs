@@ -14,7 +14,7 @@ use bevy_rapier3d::plugin::context::RapierContextColliders;
 use bevy_rapier3d::prelude::*;
 use bevy_rapier3d::rapier::pipeline::ActiveHooks as RapierHooks;
 use std::time::Duration;
-use stickslip_bevy::{StickSlipFriction, StickSlipRapier};
+use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapier};
 
 const DT: f32 = 1.0 / 60.0;
 const C: f64 = 1e4;
@@ -82,7 +82,7 @@ fn recycled(app: &App, e: Entity) -> bool {
     let h = handle(app, e);
     app.world()
         .resource::<StickSlipRapier>()
-        .modifier
+        .modifier()
         .is_recycled(h)
 }
 

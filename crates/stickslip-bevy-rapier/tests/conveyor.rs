@@ -15,7 +15,7 @@ mod common;
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
 use common::*;
-use stickslip_bevy::StickSlipVibration;
+use stickslip_bevy_rapier::StickSlipVibration;
 use stickslip_core::popov;
 use stickslip_core::waveform::Waveform;
 use stickslip_rapier_035::{Amplitude, VibrationDirection, VibrationMode, VibrationSource};

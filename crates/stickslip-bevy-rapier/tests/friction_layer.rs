@@ -8,7 +8,7 @@
 
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
-use stickslip_bevy::{
+use stickslip_bevy_rapier::{
     StickSlipContacts, StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin,
     StickSlipVibration, SurfaceVelocity,
 };
@@ -114,26 +114,29 @@ fn contacts_are_read_back_as_entities() {
     let (mut app, ground, b) = app(0.0, ());
     app.world_mut()
         .resource_mut::<StickSlipRapier>()
-        .modifier
+        .modifier_mut()
         .set_read_back(ReadBack::Contacts);
     run(&mut app, 30);
     let contacts = &app.world().resource::<StickSlipContacts>().0;
     assert_eq!(contacts.len(), 1);
     let c = contacts[0];
-    let pair = [c.entity1, c.entity2];
+    let pair = [c.collider1, c.collider2];
     assert!(pair.contains(&ground) && pair.contains(&b), "{pair:?}");
     let weight = 8.0 * 9.81;
     assert!(
-        (c.report.normal_force - weight).abs() < 0.01 * weight,
+        (c.normal_force - weight).abs() < 0.01 * weight,
         "normal force {} vs {weight}",
-        c.report.normal_force
+        c.normal_force
     );
 }
 
 #[derive(Resource, Default)]
-struct Changes(Vec<stickslip_bevy::RegimeChanged>);
+struct Changes(Vec<stickslip_bevy_rapier::RegimeChanged>);
 
-fn record(mut events: MessageReader<stickslip_bevy::RegimeChanged>, mut changes: ResMut<Changes>) {
+fn record(
+    mut events: MessageReader<stickslip_bevy_rapier::RegimeChanged>,
+    mut changes: ResMut<Changes>,
+) {
     changes.0.extend(events.read().copied());
 }
 
@@ -145,7 +148,7 @@ fn regime_changes_arrive_as_messages() {
     app.init_resource::<Changes>().add_systems(Update, record);
     app.world_mut()
         .resource_mut::<StickSlipRapier>()
-        .modifier
+        .modifier_mut()
         .set_read_back(ReadBack::Contacts);
     run(&mut app, 90);
     let changes = &app.world().resource::<Changes>().0;
@@ -154,8 +157,8 @@ fn regime_changes_arrive_as_messages() {
         first.from, None,
         "the first message announces a new contact"
     );
-    assert!([first.entity1, first.entity2].contains(&ground));
-    assert!([first.entity1, first.entity2].contains(&b));
+    assert!([first.collider1, first.collider2].contains(&ground));
+    assert!([first.collider1, first.collider2].contains(&b));
     assert_eq!(changes.last().unwrap().to, Regime::Sliding, "{changes:?}");
     // A steady slide does not flicker: new contact, (stick-slip,) sliding.
     assert!(changes.len() <= 3, "{changes:?}");

@@ -19,10 +19,10 @@
 //! fixed schedule at the scenario's dt, stickslip brackets every step.
 //!
 //! ```sh
-//! cargo run --release -p stickslip-bevy --features window,scenario --example view -- \
+//! cargo run --release -p stickslip-bevy-rapier --features window,scenario --example view -- \
 //!     scenarios/belt_stick_slip.toml
 //! # No display: under Xvfb, render 90 frames of 1/30 s simulated time, save the window, exit.
-//! xvfb-run -a -s "-screen 0 1280x720x24" cargo run -p stickslip-bevy \
+//! xvfb-run -a -s "-screen 0 1280x720x24" cargo run -p stickslip-bevy-rapier \
 //!     --features window,scenario --example view -- scenarios/incline.toml \
 //!     --screenshot incline.png --frames 90
 //! ```
@@ -35,12 +35,12 @@ use bevy_rapier3d::prelude::*;
 use bevy_rapier3d::rapier::geometry::ShapeType;
 use std::path::PathBuf;
 use std::time::Duration;
-use stickslip_bevy::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
-use stickslip_bevy::scenario::{
+use stickslip_bevy_rapier::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
+use stickslip_bevy_rapier::scenario::{
     DriverAction, LoadedScenario, Scenario, StickSlipScenarioPlugin, despawn_scenario,
     spawn_scenario,
 };
-use stickslip_bevy::{StickSlipContacts, StickSlipRapier, StickSlipRapierPlugin};
+use stickslip_bevy_rapier::{StickSlipContacts, StickSlipRapier, StickSlipRapierPlugin};
 use stickslip_core::law::Regime;
 
 /// The window's size (px).
@@ -394,7 +394,7 @@ fn draw_springs(
     let Some(loaded) = loaded else {
         return;
     };
-    let t = stickslip.modifier.time() - loaded.start_time;
+    let t = stickslip.modifier().time() - loaded.start_time;
     for d in loaded.drivers() {
         let DriverAction::Spring {
             anchor,
@@ -440,7 +440,7 @@ fn hud(
     let (Ok(mut text), Some(loaded)) = (text.single_mut(), loaded) else {
         return;
     };
-    let totals = stickslip.modifier.totals().unwrap_or_default();
+    let totals = stickslip.modifier().totals().unwrap_or_default();
     let state = match (time.is_paused(), time.relative_speed() < 1.0) {
         (true, _) => "   [paused]",
         (false, true) => "   [slow motion x0.1]",
@@ -456,7 +456,7 @@ fn hud(
          violet rapier's own friction\n\
          keys      Space pause  S slow motion  R reload + restart  G gizmos",
         name = loaded.name,
-        t = stickslip.modifier.time() - loaded.start_time,
+        t = stickslip.modifier().time() - loaded.start_time,
         description = wrap(&loaded.description, 100),
         bodies = loaded.bodies.len(),
         st = totals.sticking,

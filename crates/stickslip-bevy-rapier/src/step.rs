@@ -4,9 +4,7 @@
 //! where nothing can be done between two steps.
 
 use crate::hooks::{StepHooks, UserHooks};
-use crate::state::{
-    LastRegimes, RegimeChanged, StickSlipContacts, StickSlipRapier, publish_reports,
-};
+use crate::state::{LastRegimes, StickSlipRapier, publish_reports};
 use bevy::ecs::system::{StaticSystemParam, SystemParam, SystemParamItem};
 use bevy::prelude::*;
 use bevy_rapier3d::plugin::context::{
@@ -14,6 +12,7 @@ use bevy_rapier3d::plugin::context::{
     RapierRigidBodySet, SimulationToRenderTime,
 };
 use bevy_rapier3d::prelude::*;
+use stickslip_bevy::{RegimeChanged, StickSlipContacts};
 
 /// The rapier steps of one frame, exactly as bevy_rapier 0.36's `step_simulation` runs them.
 #[derive(Debug, Clone, Copy, PartialEq)]

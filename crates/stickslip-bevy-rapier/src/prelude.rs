@@ -1,6 +1,6 @@
-//! What a bevy_rapier app names: `use stickslip_bevy::prelude::*;`.
+//! What a bevy_rapier app names: `use stickslip_bevy_rapier::prelude::*;`.
 pub use crate::{
-    EntityContact, RegimeChanged, StickSlipContacts, StickSlipFriction, StickSlipRapier,
+    ContactReport, RegimeChanged, StickSlipContacts, StickSlipFriction, StickSlipRapier,
     StickSlipRapierPlugin, StickSlipVibration, SurfaceVelocity,
 };
 // The core's prelude without `Curve`, which bevy's prelude names too (bevy_math's `Curve`):

@@ -18,8 +18,10 @@ use bevy_rapier3d::plugin::context::{RapierContextColliders, RapierRigidBodySet}
 use bevy_rapier3d::prelude::*;
 use std::path::PathBuf;
 use std::time::Duration;
-use stickslip_bevy::scenario::{LoadedScenario, Scenario, StickSlipScenarioPlugin, spawn_scenario};
-use stickslip_bevy::{StickSlipRapier, StickSlipRapierPlugin};
+use stickslip_bevy_rapier::scenario::{
+    LoadedScenario, Scenario, StickSlipScenarioPlugin, spawn_scenario,
+};
+use stickslip_bevy_rapier::{StickSlipRapier, StickSlipRapierPlugin};
 use stickslip_scenario_035::Runner;
 
 fn scenarios() -> Vec<PathBuf> {
@@ -68,11 +70,11 @@ fn every_shipped_scenario_ends_where_the_runner_ends() {
 
         let mut app = app();
         spawn_scenario(app.world_mut(), &scenario).unwrap();
-        let t0 = app.world().resource::<StickSlipRapier>().modifier.time();
+        let t0 = app.world().resource::<StickSlipRapier>().modifier().time();
         for _ in 0..steps {
             app.update();
         }
-        let t = app.world().resource::<StickSlipRapier>().modifier.time() - t0;
+        let t = app.world().resource::<StickSlipRapier>().modifier().time() - t0;
         assert_eq!(
             t.to_bits(),
             runner.time().to_bits(),

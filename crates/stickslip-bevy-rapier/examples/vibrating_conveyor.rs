@@ -29,10 +29,10 @@
 //! `StickSlipFriction` / `StickSlipVibration` component on the troughs and parts.
 //!
 //! ```sh
-//! cargo run --release -p stickslip-bevy --features window --example vibrating_conveyor
+//! cargo run --release -p stickslip-bevy-rapier --features window --example vibrating_conveyor
 //! # No display: under Xvfb (software Vulkan), render 120 frames of 1/30 s simulated time
 //! # each, save the window and exit.
-//! xvfb-run -a -s "-screen 0 1280x720x24" cargo run -p stickslip-bevy --features window \
+//! xvfb-run -a -s "-screen 0 1280x720x24" cargo run -p stickslip-bevy-rapier --features window \
 //!     --example vibrating_conveyor -- --screenshot conveyor.png --frames 120
 //! ```
 
@@ -45,8 +45,8 @@ use bevy_rapier3d::plugin::RapierTransformPropagateSet;
 use bevy_rapier3d::prelude::*;
 use std::f32::consts::FRAC_PI_6;
 use std::time::Duration;
-use stickslip_bevy::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
-use stickslip_bevy::{
+use stickslip_bevy_rapier::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
+use stickslip_bevy_rapier::{
     StickSlipContacts, StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin,
     StickSlipVibration,
 };
@@ -638,7 +638,7 @@ fn hud(
         return;
     };
     let on = popov_base.iter().any(|on| on);
-    let totals = stickslip.modifier.totals().unwrap_or_default();
+    let totals = stickslip.modifier().totals().unwrap_or_default();
     let state = match (time.is_paused(), time.relative_speed() < 1.0) {
         (true, _) => "   [paused]",
         (false, true) => "   [slow motion x0.1]",
@@ -672,7 +672,7 @@ fn hud(
          contacts  {st} sticking, {ss} stick-slip, {sl} sliding;  friction dissipates {pw:.2} W\n\
          parts     green sticking, orange stick-slip, red sliding, white in flight\n\
          keys      V vibration  Space pause  S slow motion  R reset  G gizmos",
-        t = stickslip.modifier.time(),
+        t = stickslip.modifier().time(),
         vib = if on { "ON" } else { "OFF" },
         s0 = measured(0),
         s1 = measured(1),

@@ -7,13 +7,13 @@
 //! parts along the plates, yet they move: at Popov's compliant contact theory's free drive
 //! velocity (`stickslip_core::popov::free_drive_velocity`), one plate forward, the other
 //! backward. The HUD shows each plate's measured mean speed beside the theory's.
-//! (`crates/stickslip-bevy/tests/drive.rs` checks the same headless.)
+//! (`crates/stickslip-bevy-rapier/tests/drive.rs` checks the same headless.)
 //!
 //! Keys: F flip both ellipses (phase shift ↔ −phase shift), Space pause, R reset.
 //!
 //! ```sh
-//! cargo run --release -p stickslip-bevy --features window --example bevy_elliptical_drive
-//! xvfb-run -a -s "-screen 0 1280x720x24" cargo run -p stickslip-bevy --features window \
+//! cargo run --release -p stickslip-bevy-rapier --features window --example bevy_elliptical_drive
+//! xvfb-run -a -s "-screen 0 1280x720x24" cargo run -p stickslip-bevy-rapier --features window \
 //!     --example bevy_elliptical_drive -- --screenshot drive.png --frames 90
 //! ```
 
@@ -22,7 +22,7 @@ use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured, save_to_dis
 use bevy::time::TimeUpdateStrategy;
 use bevy_rapier3d::prelude::*;
 use std::time::Duration;
-use stickslip_bevy::{StickSlipFriction, StickSlipRapierPlugin, StickSlipVibration};
+use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapierPlugin, StickSlipVibration};
 use stickslip_core::law::Law;
 use stickslip_core::popov::{CompliantContact, Oscillation, free_drive_velocity};
 use stickslip_core::sliding_curve::Curve;

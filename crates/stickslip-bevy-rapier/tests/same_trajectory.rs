@@ -5,7 +5,7 @@
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
 use bevy_rapier3d::rapier::prelude as rp;
-use stickslip_bevy::{StickSlipFriction, StickSlipRapierPlugin};
+use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapierPlugin};
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 use stickslip_rapier_035::{FrictionMaterial, StickSlip};

@@ -4,17 +4,15 @@
 use bevy::prelude::*;
 use bevy_rapier3d::rapier::geometry::{ColliderHandle, ColliderSet};
 use std::collections::HashMap;
+use stickslip_bevy::{RegimeChanged, StickSlipContacts};
 use stickslip_core::law::Regime;
-use stickslip_rapier_035::{ContactReport, StickSlip};
+use stickslip_rapier_035::StickSlip;
 
 /// The modifier of the app's default rapier context.
 #[derive(Resource)]
 pub struct StickSlipRapier {
-    /// The contact modifier (materials, vibration sources, contact state, reports).
-    pub modifier: StickSlip,
-    /// Whether stickslip steps the world (false when bevy_rapier's step system could not be
-    /// taken over: see the error logged at startup).
-    pub active: bool,
+    pub(crate) modifier: StickSlip,
+    pub(crate) active: bool,
     pub(crate) attached: HashMap<Entity, ColliderHandle>,
     pub(crate) vibrating: HashMap<Entity, ColliderHandle>,
     pub(crate) surface_entities: HashMap<Entity, ColliderHandle>,
@@ -31,6 +29,26 @@ impl StickSlipRapier {
         }
     }
 
+    /// The contact modifier: its materials, vibration sources, contact state, reports and
+    /// snapshots.
+    pub fn modifier(&self) -> &StickSlip {
+        &self.modifier
+    }
+
+    /// The contact modifier, to change its configuration or read-back, or to take or restore
+    /// a snapshot. Colliders come and go with the components (`StickSlipFriction`,
+    /// `StickSlipVibration`, `SurfaceVelocity`): attaching or detaching here is undone by the
+    /// next sync.
+    pub fn modifier_mut(&mut self) -> &mut StickSlip {
+        &mut self.modifier
+    }
+
+    /// Whether stickslip steps the world (false when bevy_rapier's step system could not be
+    /// taken over: see the error logged at startup).
+    pub fn is_active(&self) -> bool {
+        self.active
+    }
+
     /// Whether the collider of `entity` is attached to stickslip.
     pub fn is_attached(&self, entity: Entity) -> bool {
         self.attached.contains_key(&entity)
@@ -40,53 +58,6 @@ impl StickSlipRapier {
     pub fn attached_count(&self) -> usize {
         self.attached.len()
     }
-}
-
-/// A contact read back after the step (with `ReadBack::Contacts` on the modifier), its
-/// colliders as entities.
-#[derive(Debug, Clone, Copy)]
-pub struct EntityContact {
-    /// The entity of the report's collider 1.
-    pub entity1: Entity,
-    /// The entity of the report's collider 2.
-    pub entity2: Entity,
-    /// What stickslip measured (regime, forces, slip, …).
-    pub report: ContactReport,
-}
-
-/// The contacts of the last rapier step, as entities (empty unless the modifier reads
-/// contacts back: `StickSlipRapier::modifier.set_read_back(ReadBack::Contacts)`).
-#[derive(Resource, Debug, Default)]
-pub struct StickSlipContacts(pub Vec<EntityContact>);
-
-impl StickSlipContacts {
-    /// The contacts of the collider `entity`.
-    pub fn of(&self, entity: Entity) -> impl Iterator<Item = &EntityContact> {
-        self.0
-            .iter()
-            .filter(move |c| c.entity1 == entity || c.entity2 == entity)
-    }
-
-    /// The most slippery regime among the contacts of the collider `entity` (sliding over
-    /// stick-slip over sticking), or `None` without contacts: e.g. to colour a part.
-    pub fn regime_of(&self, entity: Entity) -> Option<Regime> {
-        Regime::most_slippery(self.of(entity).map(|c| c.report.regime))
-    }
-}
-
-/// A pair of entities whose contact changed regime (sticking, stick-slip, sliding) in a
-/// rapier step, or began (with contact read-back on). A pair with several manifolds counts as
-/// one contact: its first manifold's regime.
-#[derive(Message, Debug, Clone, Copy, PartialEq)]
-pub struct RegimeChanged {
-    /// The entity of the first collider.
-    pub entity1: Entity,
-    /// The entity of the second collider.
-    pub entity2: Entity,
-    /// The regime before (`None`: a new contact).
-    pub from: Option<Regime>,
-    /// The regime now.
-    pub to: Regime,
 }
 
 /// The regime of each pair in the last step (for [`RegimeChanged`]).
@@ -116,11 +87,7 @@ pub(crate) fn publish_reports(
         let (Some(entity1), Some(entity2)) = (entity(r.collider1), entity(r.collider2)) else {
             continue;
         };
-        contacts.0.push(EntityContact {
-            entity1,
-            entity2,
-            report: *r,
-        });
+        contacts.0.push(r.with_colliders(entity1, entity2));
         if now.contains_key(&(entity1, entity2)) {
             continue;
         }
@@ -128,8 +95,8 @@ pub(crate) fn publish_reports(
         let from = last.0.get(&(entity1, entity2)).copied();
         if from != Some(r.regime) {
             changed.write(RegimeChanged {
-                entity1,
-                entity2,
+                collider1: entity1,
+                collider2: entity2,
                 from,
                 to: r.regime,
             });

@@ -17,7 +17,9 @@ use bevy_rapier3d::plugin::context::RapierContextColliders;
 use bevy_rapier3d::prelude::*;
 use std::collections::BTreeSet;
 use std::sync::Mutex;
-use stickslip_bevy::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin, SurfaceVelocity};
+use stickslip_bevy_rapier::{
+    StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin, SurfaceVelocity,
+};
 
 #[derive(Component)]
 struct OneWay;
@@ -128,7 +130,7 @@ fn the_apps_own_hooks_work_beside_stickslip() {
         "stickslip's box moved"
     );
     let state = app.world_mut().resource_mut::<StickSlipRapier>();
-    assert_eq!(state.modifier.active_contacts(), 1);
+    assert_eq!(state.modifier().active_contacts(), 1);
 }
 
 /// The pairs the app's hook was called for.
@@ -230,7 +232,7 @@ fn recycled(app: &App, e: Entity) -> bool {
     let h = app.world().get::<RapierColliderHandle>(e).unwrap().0;
     app.world()
         .resource::<StickSlipRapier>()
-        .modifier
+        .modifier()
         .is_recycled(h)
 }
 
@@ -269,7 +271,7 @@ fn the_apps_hook_sees_the_pairs_it_sees_without_stickslip() {
     let records = |app: &mut App| {
         app.world_mut()
             .resource_mut::<StickSlipRapier>()
-            .modifier
+            .modifier()
             .active_contacts()
     };
     assert_eq!(records(&mut app), 2, "stickslip's two attached grounds");

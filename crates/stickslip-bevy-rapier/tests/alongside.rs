@@ -6,7 +6,7 @@
 
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
-use stickslip_bevy::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin};
+use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin};
 
 #[derive(Resource, Default)]
 struct Seen {
@@ -125,5 +125,5 @@ fn sensors_groups_events_and_joints_work_beside_stickslip() {
     );
     let state = app.world().resource::<StickSlipRapier>();
     // The box and the landed ball touch the attached floor: two records.
-    assert_eq!(state.modifier.active_contacts(), 2);
+    assert_eq!(state.modifier().active_contacts(), 2);
 }

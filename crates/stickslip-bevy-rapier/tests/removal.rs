@@ -12,7 +12,7 @@ mod common;
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
 use common::*;
-use stickslip_bevy::{StickSlipFriction, StickSlipRapier, StickSlipVibration};
+use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapier, StickSlipVibration};
 use stickslip_core::waveform::Waveform;
 use stickslip_rapier_035::{Amplitude, VibrationDirection, VibrationMode, VibrationSource};
 
@@ -53,7 +53,7 @@ fn removing_the_friction_component_detaches_both_sides() {
     {
         let state = app.world().resource::<StickSlipRapier>();
         assert!(state.is_attached(g) && state.is_attached(b));
-        assert_eq!(state.modifier.active_contacts(), 1);
+        assert_eq!(state.modifier().active_contacts(), 1);
     }
     let (hg, hb) = (handle(&app, g), handle(&app, b));
     for e in [g, b] {
@@ -63,10 +63,10 @@ fn removing_the_friction_component_detaches_both_sides() {
     let state = app.world().resource::<StickSlipRapier>();
     assert!(!state.is_attached(g) && !state.is_attached(b));
     assert_eq!(state.attached_count(), 0);
-    assert!(!state.modifier.is_attached(hg) && !state.modifier.is_attached(hb));
-    assert!(state.modifier.material(hg).is_none() && state.modifier.material(hb).is_none());
+    assert!(!state.modifier().is_attached(hg) && !state.modifier().is_attached(hb));
+    assert!(state.modifier().material(hg).is_none() && state.modifier().material(hb).is_none());
     assert_eq!(
-        state.modifier.active_contacts(),
+        state.modifier().active_contacts(),
         0,
         "contact state left behind"
     );
@@ -92,19 +92,19 @@ fn removing_or_despawning_a_vibration_drops_its_source() {
     let (hg, hp) = (handle(&app, g), handle(&app, plate));
     {
         let state = app.world().resource::<StickSlipRapier>();
-        assert!(state.modifier.vibration(hg).is_some());
-        assert!(state.modifier.vibration(hp).is_some());
+        assert!(state.modifier().vibration(hg).is_some());
+        assert!(state.modifier().vibration(hp).is_some());
     }
     app.world_mut().entity_mut(g).remove::<StickSlipVibration>();
     app.world_mut().despawn(plate);
     steps(&mut app, 3);
     let state = app.world().resource::<StickSlipRapier>();
     assert!(
-        state.modifier.vibration(hg).is_none(),
+        state.modifier().vibration(hg).is_none(),
         "removed source kept"
     );
     assert!(
-        state.modifier.vibration(hp).is_none(),
+        state.modifier().vibration(hp).is_none(),
         "despawned source kept"
     );
     assert!(state.is_attached(g), "the friction stays attached");
@@ -120,13 +120,13 @@ fn removals_between_fixed_ticks_are_not_missed() {
         .insert_resource(fixed())
         .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(1)))
         .add_plugins(RapierPhysicsPlugin::<NoUserData>::default().in_fixed_schedule())
-        .add_plugins(stickslip_bevy::StickSlipRapierPlugin::default().in_fixed_schedule());
+        .add_plugins(stickslip_bevy_rapier::StickSlipRapierPlugin::default().in_fixed_schedule());
     app.update();
     let law = ep(1e5, 0.5, 0.5);
     let g = ground(&mut app, law.clone());
     let b = part(&mut app, 0.0, law);
     steps(&mut app, 300);
-    let clock = |app: &App| app.world().resource::<StickSlipRapier>().modifier.time();
+    let clock = |app: &App| app.world().resource::<StickSlipRapier>().modifier().time();
     // Remove right after a fixed tick: the next one is ~17 frames away.
     let t = clock(&app);
     while clock(&app) == t {
@@ -142,11 +142,11 @@ fn removals_between_fixed_ticks_are_not_missed() {
     }
     steps(&mut app, 60);
     let state = app.world().resource::<StickSlipRapier>();
-    assert!(clock_moved(t, state.modifier.time()), "no fixed tick ran");
+    assert!(clock_moved(t, state.modifier().time()), "no fixed tick ran");
     assert_eq!(state.attached_count(), 0, "a removal was missed");
-    assert!(!state.modifier.is_attached(hb));
+    assert!(!state.modifier().is_attached(hb));
     assert_eq!(
-        state.modifier.active_contacts(),
+        state.modifier().active_contacts(),
         0,
         "contact state left behind"
     );

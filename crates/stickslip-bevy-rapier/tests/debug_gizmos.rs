@@ -9,8 +9,8 @@ use bevy::mesh::skinning::SkinnedMeshInverseBindposes;
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
 use std::any::TypeId;
-use stickslip_bevy::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
-use stickslip_bevy::{StickSlipFriction, StickSlipRapierPlugin};
+use stickslip_bevy_rapier::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
+use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapierPlugin};
 use stickslip_core::law::Regime;
 
 fn gizmo_app() -> App {

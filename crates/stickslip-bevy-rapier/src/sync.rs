@@ -13,12 +13,12 @@
 //! rapier recycles them as it does without stickslip) and off again on detach or surface
 //! removal.
 
-use crate::components::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
 use crate::state::StickSlipRapier;
 use bevy::prelude::*;
 use bevy_rapier3d::plugin::context::{DefaultRapierContext, RapierContextColliders};
 use bevy_rapier3d::prelude::*;
 use bevy_rapier3d::rapier::geometry::{ColliderHandle, ColliderSet};
+use stickslip_bevy::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
 
 /// Whether a collider lives in the default context (the one stickslip brackets).
 fn in_default(link: Option<&RapierContextEntityLink>, default: Entity) -> bool {

@@ -11,7 +11,7 @@ mod common;
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
 use common::*;
-use stickslip_bevy::StickSlipVibration;
+use stickslip_bevy_rapier::StickSlipVibration;
 use stickslip_fixtures::VibratingPlate;
 use stickslip_rapier_035::{VibrationMode, VibrationSource};
 
