@@ -199,7 +199,7 @@ impl Theory {
 
 /// A part: its trough (0, 1 or 2) and start position along it (m).
 #[derive(Component)]
-#[require(RegimeTally, Run)]
+#[require(RegimeTally, Shown, Run)]
 struct Part {
     lane: usize,
     home: f32,
@@ -242,6 +242,12 @@ impl Run {
 /// without contact: its colour is the regime of most of them.
 #[derive(Component, Default)]
 struct RegimeTally([u32; 4]);
+
+/// The regime a part is shown in (0 sticking, 1 stick-slip, 2 sliding, 3 none): the HUD counts
+/// the parts as the picture shows them (a part asleep keeps its regime; avian reads back only
+/// the contacts it solved).
+#[derive(Component, Default)]
+struct Shown(usize);
 
 /// The base of trough 3 (carries the Popov vibration).
 #[derive(Component)]
@@ -556,14 +562,19 @@ fn tally_regimes(
 /// avian's own pairs (trough 1), which have no regime.
 fn colour_parts(
     palette: Res<Palette>,
-    mut parts: Query<(&mut RegimeTally, &mut MeshMaterial3d<StandardMaterial>)>,
+    mut parts: Query<(
+        &mut RegimeTally,
+        &mut Shown,
+        &mut MeshMaterial3d<StandardMaterial>,
+    )>,
 ) {
-    for (mut tally, mut material) in &mut parts {
+    for (mut tally, mut shown, mut material) in &mut parts {
         if tally.0 == [0; 4] {
             continue; // no tick since the last frame
         }
         let most = (0..4).max_by_key(|i| (tally.0[*i], *i)).unwrap_or(3);
         tally.0 = [0; 4];
+        shown.0 = most;
         let handle = match most {
             0..=2 => &palette.regimes[most],
             _ => &palette.airborne,
@@ -595,8 +606,8 @@ fn hud(
     time: Res<Time<Virtual>>,
     fixed: Res<Time<Fixed>>,
     theory: Res<Theory>,
-    contacts: Res<StickSlipContacts>,
     parts: Query<(&Part, &Run)>,
+    shown: Query<&Shown>,
     popov_base: Query<Has<StickSlipVibration>, With<PopovBase>>,
     mut text: Query<&mut Text, With<Hud>>,
 ) {
@@ -622,13 +633,9 @@ fn hud(
     } else {
         "0          (vibration off: EP holds)".into()
     };
-    let mut regimes = [0usize; 3];
-    for c in contacts.0.iter().filter(|c| !c.reset) {
-        match c.regime {
-            Regime::Sticking => regimes[0] += 1,
-            Regime::StickSlip => regimes[1] += 1,
-            Regime::Sliding => regimes[2] += 1,
-        }
+    let mut regimes = [0usize; 4];
+    for s in &shown {
+        regimes[s.0.min(3)] += 1;
     }
     text.0 = format!(
         "stickslip in avian    t = {t:.2} s    slope tan {SLOPE}    vibration {vib}{state}\n\
@@ -638,8 +645,8 @@ fn hud(
          2  stickslip, static     {hold:<20} 0  holds: tan {SLOPE} < mu_s {MU_S}\n\
          3  Popov vibration       {conveyed:<20} {popov}\n\
          \n\
-         stickslip contacts  {st} sticking, {ss} stick-slip, {sl} sliding\n\
-         parts   green sticking, orange stick-slip, red sliding, white avian's own\n\
+         parts   {st} sticking, {ss} stick-slip, {sl} sliding, {no} without stickslip contact\n\
+         colours green sticking, orange stick-slip, red sliding, white avian's own\n\
          keys    V vibration  Space pause  S slow motion  R reset  G gizmos",
         t = fixed.elapsed_secs_f64(),
         vib = if on { "ON" } else { "OFF" },
@@ -647,6 +654,7 @@ fn hud(
         st = regimes[0],
         ss = regimes[1],
         sl = regimes[2],
+        no = regimes[3],
     );
 }
 

@@ -6,7 +6,10 @@
 //!   gives the seed's exact switched law ("Phys"): held below μ_s without creep, sliding at
 //!   μ_k. Otherwise the pair is avian's own Coulomb friction, and stickslip leaves it alone.
 //! - A side with a stickslip material brings its law; a plain side brings "Phys" (or Coulomb
-//!   at μ_k); the two laws combine with core's `Law::combine` under avian's rule of the pair.
+//!   at μ_k); the two laws combine with core's `Law::combine_or_coulomb` under avian's rule of
+//!   the pair: a combination out of range (e.g. `Multiply` of two small coefficients) becomes
+//!   plain Coulomb friction at the combined break-away coefficient, with a warning, as in
+//!   stickslip-rapier.
 
 use avian3d::prelude::{CoefficientCombine, Friction};
 use bevy::platform::collections::HashMap;
@@ -129,14 +132,15 @@ fn combine(a: Side, b: Side) -> Option<Law> {
             .then(|| plain_law(c.dynamic_coefficient as f64, c.static_coefficient as f64));
     }
     let pair_rule = rule(a.rule().max(b.rule()));
-    let (la, lb) = (a.law(), b.law());
-    // A combination out of range (e.g. Multiply of two small coefficients) falls back to the
-    // material's own law: stickslip's side wins.
-    let combined = la.combine(&lb, pair_rule);
-    Some(combined.unwrap_or(match a {
-        Side::Material(..) => la,
-        Side::Plain(_) => lb,
-    }))
+    let (law, error) = a.law().combine_or_coulomb(&b.law(), pair_rule);
+    if let Some(e) = error {
+        // Once per combination: the cache keeps it.
+        warn!(
+            "stickslip: the materials of {a:?} and {b:?} do not combine by {pair_rule:?} \
+             ({e}); the pair uses plain Coulomb friction"
+        );
+    }
+    Some(law)
 }
 
 /// The side of a collider: its stickslip material (or the plugin's default for

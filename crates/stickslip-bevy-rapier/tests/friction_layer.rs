@@ -162,4 +162,16 @@ fn regime_changes_arrive_as_messages() {
     assert_eq!(changes.last().unwrap().to, Regime::Sliding, "{changes:?}");
     // A steady slide does not flicker: new contact, (stick-slip,) sliding.
     assert!(changes.len() <= 3, "{changes:?}");
+    // The slide dissipates what its friction does against the slip: P = |F_f| |ġ|.
+    let contacts = &app.world().resource::<StickSlipContacts>().0;
+    let c = contacts
+        .iter()
+        .find(|c| c.collider1 == b || c.collider2 == b)
+        .expect("the box's contact");
+    let f = Vec3::from(c.friction_force).length() as f64;
+    let v = Vec3::from(c.slip_velocity).length() as f64;
+    assert!(
+        v > 0.1 && (c.dissipated_power - f * v).abs() < 0.01 * f * v,
+        "{c:?}"
+    );
 }

@@ -20,7 +20,7 @@ use crate::warnings::{Warned, Warning};
 use rapier::prelude::*;
 use std::collections::HashMap;
 use stickslip_core::FrictionMaterial;
-use stickslip_core::law::{CombineRule, Coulomb, FrictionLaw, Law};
+use stickslip_core::law::{CombineRule, Coulomb, Law};
 
 /// Most combined laws the cache keeps before it starts over.
 #[doc(hidden)]
@@ -241,7 +241,8 @@ impl PairLaws {
         }
         let law = cache.entry(key).or_insert_with(|| {
             let (a, b) = (self.side_law(key.0), self.side_law(key.1));
-            a.combine(&b, rule).unwrap_or_else(|e| {
+            let (law, error) = a.combine_or_coulomb(&b, rule);
+            if let Some(e) = error {
                 warned.once(
                     Warning::Combine,
                     &format!(
@@ -249,8 +250,8 @@ impl PairLaws {
                          combine by {rule:?} ({e}); the pair uses plain Coulomb friction"
                     ),
                 );
-                plain_law(rule.apply(a.static_coefficient(), b.static_coefficient()))
-            })
+            }
+            law
         });
         // Held for this one contact's step, once per new combination.
         f(law)

@@ -22,7 +22,9 @@
 //! - The result never depends on which side is first, and a material combined with itself by
 //!   an idempotent rule (Average, Min, Max, GeometricMean) is that material, exactly.
 
-use super::{Coulomb, ElastoPlastic, EpVariant, Law, Physical, Regularization, Regularized};
+use super::{
+    Coulomb, ElastoPlastic, EpVariant, FrictionLaw, Law, Physical, Regularization, Regularized,
+};
 use crate::ParamError;
 use crate::combine_rule::CombineRule;
 use crate::sliding_curve::{Curve, SlidingCurve};
@@ -168,12 +170,39 @@ impl Law {
             _ => Law::Coulomb(Coulomb::new(mu_ba)?),
         })
     }
+
+    /// The law of a pair as every engine adapter takes it: [`Law::combine`], or, where a
+    /// combined coefficient leaves the valid range, plain Coulomb friction at the two
+    /// break-away coefficients combined by `rule`, clamped into range. The error says why it
+    /// fell back (the adapters warn once).
+    pub fn combine_or_coulomb(&self, other: &Law, rule: CombineRule) -> (Law, Option<ParamError>) {
+        match self.combine(other, rule) {
+            Ok(law) => (law, None),
+            Err(e) => {
+                let mu = rule.apply(self.static_coefficient(), other.static_coefficient());
+                (Law::Coulomb(Coulomb::clamped(mu)), Some(e))
+            }
+        }
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::sliding_curve::StribeckDecay;
+
+    #[test]
+    fn a_pair_out_of_range_falls_back_to_clamped_coulomb() {
+        let a = Law::Coulomb(Coulomb::new(1e-4).unwrap());
+        let b = Law::elasto_plastic(1e4, 1e-4, 1e-4, Curve::constant(1e-4).unwrap()).unwrap();
+        let (law, err) = a.combine_or_coulomb(&b, CombineRule::Multiply);
+        assert!(err.is_some(), "1e-8 is below the smallest coefficient");
+        assert_eq!(law, Law::Coulomb(Coulomb::clamped(1e-8)));
+        assert_eq!(law.static_coefficient(), crate::error::MIN_COEFFICIENT);
+        let (law, err) = a.combine_or_coulomb(&b, CombineRule::Average);
+        assert!(err.is_none());
+        assert_eq!(law, a.combine(&b, CombineRule::Average).unwrap());
+    }
 
     fn laws() -> Vec<Law> {
         let stribeck = Curve::stribeck(0.6, 0.4, 0.01, StribeckDecay::Gaussian, 0.0).unwrap();
