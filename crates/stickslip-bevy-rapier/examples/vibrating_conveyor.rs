@@ -669,7 +669,7 @@ fn hud(
          2  Popov vibration      {s1:<19} {popov}\n\
          3  vibratory feeder     {s2:<19} {feeder}\n\
          \n\
-         contacts  {st} sticking, {ss} stick-slip, {sl} sliding;  friction dissipates {pw:.2} W\n\
+         contacts  {st} sticking, {ss} stick-slip, {sl} sliding;  friction dissipates {pw:.2} mW\n\
          parts     green sticking, orange stick-slip, red sliding, white in flight\n\
          keys      V vibration  Space pause  S slow motion  R reset  G gizmos",
         t = stickslip.modifier().time(),
@@ -680,7 +680,7 @@ fn hud(
         st = totals.sticking,
         ss = totals.stick_slip,
         sl = totals.sliding,
-        pw = totals.dissipated_power,
+        pw = 1e3 * totals.dissipated_power,
     );
 }
 

@@ -9,20 +9,25 @@
 //! asleep under rapier's threshold and stop dead): averaged (20 kHz) and time-resolved (1 kHz
 //! at 60 rapier steps per period, as 60 substeps of one frame; the theory assumes a steady
 //! speed, so the part's speed ripple within a period, ~μ0 α g/(2π f), must be small beside
-//! v*).
+//! v*). At that speed the friction the read-back reports dissipates the power gravity gives
+//! the parts, within 1 % (averaged).
 
 mod common;
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
 use common::*;
-use stickslip_bevy_rapier::StickSlipVibration;
+use stickslip_bevy_rapier::{StickSlipRapier, StickSlipVibration};
 use stickslip_core::popov;
 use stickslip_core::waveform::Waveform;
-use stickslip_rapier_035::{Amplitude, VibrationDirection, VibrationMode, VibrationSource};
+use stickslip_rapier_035::{
+    Amplitude, ReadBack, VibrationDirection, VibrationMode, VibrationSource,
+};
 
 const MU0: f64 = 0.5;
 const ALPHA: f64 = 0.6;
 const SLOPE: f64 = 0.3;
+/// Mass of a part (kg, `common::part`).
+const MASS: f64 = 8.0;
 
 /// Popov's conveying speed: Ψ_w(β*) = (1 − tan θ/μ0)/α, v* = β* μ0 α f / c.
 fn theory_speed(c: f64, f: f64) -> f64 {
@@ -61,9 +66,15 @@ fn run_for(app: &mut App, seconds: f64, frame: f64) {
     panic!("the simulated time stopped at {} s", sim_time(app));
 }
 
-/// Displacement over the measuring window and mean speed of three parts.
-fn run(r: &Run) -> Vec<(f64, f64)> {
+/// Displacement over the measuring window and mean speed of three parts, and the friction's
+/// dissipated power the read-back reports at the end with the power gravity gives the parts
+/// then (W).
+fn run(r: &Run) -> (Vec<(f64, f64)>, (f64, f64)) {
     let mut app = app(r.mode, r.frame);
+    app.world_mut()
+        .resource_mut::<StickSlipRapier>()
+        .modifier_mut()
+        .set_read_back(ReadBack::Totals);
     incline(&mut app, SLOPE);
     let law = ep(r.c, MU0, MU0);
     let trough = ground(&mut app, law.clone());
@@ -91,18 +102,30 @@ fn run(r: &Run) -> Vec<(f64, f64)> {
     );
     run_for(&mut app, r.measure, r.frame);
     let t = sim_time(&app) - t0;
-    parts
+    let dissipated = app
+        .world()
+        .resource::<StickSlipRapier>()
+        .modifier()
+        .totals()
+        .map_or(f64::NAN, |t| t.dissipated_power);
+    let theta = SLOPE.atan();
+    let gravity: f64 = parts
+        .iter()
+        .map(|p| MASS * 9.81 * theta.sin() * x_v(&app, *p).1)
+        .sum();
+    let moved = parts
         .iter()
         .zip(x0)
         .map(|(p, x0)| {
             let dx = x_v(&app, *p).0 - x0;
             (dx, dx / t)
         })
-        .collect()
+        .collect();
+    (moved, (dissipated, gravity))
 }
 
 fn check(mut r: Run, f: f64, mode: VibrationMode) {
-    for (dx, _) in run(&r) {
+    for (dx, _) in run(&r).0 {
         assert!(
             dx.abs() <= MU0 / r.c,
             "{:?}: moved {dx} m without vibration",
@@ -111,7 +134,21 @@ fn check(mut r: Run, f: f64, mode: VibrationMode) {
     }
     r.vibration = Some((f, mode));
     let expect = theory_speed(r.c, f);
-    for (dx, v) in run(&r) {
+    let (moved, (dissipated, gravity)) = run(&r);
+    println!(
+        "{:?}, {mode:?}: friction dissipates {dissipated} W, gravity gives {gravity} W",
+        r.mode
+    );
+    // At the steady speed friction takes what gravity gives (averaged: the speed has no
+    // ripple within a vibration period, so every step balances).
+    if mode == VibrationMode::Averaged {
+        assert!(
+            (dissipated - gravity).abs() < 0.01 * gravity,
+            "{:?}: read back {dissipated} W dissipated, gravity gives {gravity} W",
+            r.mode
+        );
+    }
+    for (dx, v) in moved {
         println!(
             "{:?}, {mode:?} {f} Hz: travelled {dx:.4} m at {v:.5} m/s, theory {expect:.5} m/s",
             r.mode
