@@ -98,6 +98,9 @@ pub use plugin::{StickSlipAvianPlugin, StickSlipAvianSystems};
 /// Contact gizmos (feature `debug`), shared with stickslip-bevy-rapier.
 #[cfg(feature = "debug")]
 pub use stickslip_bevy::debug;
+/// Windowed apps' support (feature `window`): command line, display check, screenshots.
+#[cfg(feature = "window")]
+pub use stickslip_bevy::window;
 pub use stickslip_bevy::{
     ContactReport, RegimeChanged, StickSlipContacts, StickSlipFriction, StickSlipVibration,
     SurfaceVelocity,

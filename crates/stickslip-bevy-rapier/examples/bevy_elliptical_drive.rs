@@ -18,10 +18,8 @@
 //! ```
 
 use bevy::prelude::*;
-use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured, save_to_disk};
-use bevy::time::TimeUpdateStrategy;
 use bevy_rapier3d::prelude::*;
-use std::time::Duration;
+use stickslip_bevy_rapier::window::{ScreenshotAndExit, has_display};
 use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapierPlugin, StickSlipVibration};
 use stickslip_core::law::Law;
 use stickslip_core::popov::{CompliantContact, Oscillation, free_drive_velocity};
@@ -107,24 +105,20 @@ struct Drive {
     speed: [f32; 2],
 }
 
-#[derive(Resource)]
-struct ShotAt(String, u32);
-
 fn main() -> AppExit {
-    let mut args = std::env::args().skip(1);
-    let (mut shot, mut frames) = (None, 90u32);
-    while let Some(a) = args.next() {
-        match (a.as_str(), args.next()) {
-            ("--screenshot", Some(p)) => shot = Some(p),
-            ("--frames", Some(n)) if n.parse::<u32>().is_ok() => frames = n.parse().unwrap_or(90),
-            _ => {
-                eprintln!("usage: bevy_elliptical_drive [--screenshot PATH] [--frames N]");
-                return AppExit::error();
-            }
+    let usage = "bevy_elliptical_drive [--screenshot PATH] [--frames N]";
+    let shot = match ScreenshotAndExit::from_args(std::env::args().skip(1), 90) {
+        Ok((shot, rest)) if rest.is_empty() => shot,
+        Ok((_, rest)) => {
+            eprintln!("unexpected arguments {rest:?}\nusage: {usage}");
+            return AppExit::error();
         }
-    }
-    if std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none() {
-        eprintln!("no display: run under Xvfb (see the example's docs)");
+        Err(e) => {
+            eprintln!("{e}\nusage: {usage}");
+            return AppExit::error();
+        }
+    };
+    if !has_display(usage) {
         return AppExit::error();
     }
     let mut app = App::new();
@@ -153,12 +147,9 @@ fn main() -> AppExit {
     .add_systems(Startup, setup)
     .add_systems(FixedUpdate, (measure, wrap).after(PhysicsSet::Writeback))
     .add_systems(Update, (keys, hud));
-    if let Some(path) = shot {
-        app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f64(
-            1.0 / 30.0,
-        )))
-        .insert_resource(ShotAt(path, frames.max(1)))
-        .add_systems(Last, shot_and_exit);
+    if let Some(shot) = shot {
+        // Reproducible pictures: the window at a given frame, every frame 1/30 s.
+        app.add_plugins(shot);
     }
     app.run()
 }
@@ -306,26 +297,4 @@ fn hud(drive: Res<Drive>, time: Res<Time<Virtual>>, mut text: Query<&mut Text, W
     }
     s += "F flip the ellipses   Space pause   R reset";
     text.0 = s;
-}
-
-fn shot_and_exit(
-    mut commands: Commands,
-    shot: Res<ShotAt>,
-    frames: Res<bevy::diagnostic::FrameCount>,
-    mut exit: MessageWriter<AppExit>,
-) {
-    if frames.0 == shot.1 {
-        let path = shot.0.clone();
-        commands.spawn(Screenshot::primary_window()).observe(
-            move |captured: On<ScreenshotCaptured>, mut exit: MessageWriter<AppExit>| {
-                save_to_disk(path.clone())(captured);
-                info!("saved {path}");
-                exit.write(AppExit::Success);
-            },
-        );
-    }
-    if frames.0 > shot.1 + 300 {
-        error!("no screenshot 300 frames after it was requested");
-        exit.write(AppExit::error());
-    }
 }

@@ -36,16 +36,13 @@
 //!     --example vibrating_conveyor -- --screenshot conveyor.png --frames 120
 //! ```
 
-use bevy::diagnostic::FrameCount;
 use bevy::prelude::*;
-use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured, save_to_disk};
-use bevy::time::TimeUpdateStrategy;
 use bevy::transform::systems::mark_dirty_trees;
 use bevy_rapier3d::plugin::RapierTransformPropagateSet;
 use bevy_rapier3d::prelude::*;
 use std::f32::consts::FRAC_PI_6;
-use std::time::Duration;
 use stickslip_bevy_rapier::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
+use stickslip_bevy_rapier::window::{ScreenshotAndExit, has_display};
 use stickslip_bevy_rapier::{
     StickSlipContacts, StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin,
     StickSlipVibration,
@@ -93,18 +90,19 @@ const SETTLE: [f64; 3] = [0.2, 1.5, 0.4];
 const SAMPLE_STEPS: [u64; 3] = [1, 1, (PHYSICS_HZ / FEEDER.1 as f64) as u64];
 
 fn main() -> AppExit {
-    let options = match Options::parse(std::env::args().skip(1)) {
-        Ok(o) => o,
+    let usage = "vibrating_conveyor [--screenshot PATH] [--frames N]";
+    let shot = match ScreenshotAndExit::from_args(std::env::args().skip(1), 120) {
+        Ok((shot, rest)) if rest.is_empty() => shot,
+        Ok((_, rest)) => {
+            eprintln!("unexpected arguments {rest:?}\nusage: {usage}");
+            return AppExit::error();
+        }
         Err(e) => {
-            eprintln!("{e}\nusage: vibrating_conveyor [--screenshot PATH] [--frames N]");
+            eprintln!("{e}\nusage: {usage}");
             return AppExit::error();
         }
     };
-    if std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none() {
-        eprintln!(
-            "no display: run this example on a desktop, or under Xvfb: \
-             xvfb-run -a -s \"-screen 0 1280x720x24\" <binary> --screenshot out.png"
-        );
+    if !has_display(usage) {
         return AppExit::error();
     }
     let mut app = App::new();
@@ -147,51 +145,11 @@ fn main() -> AppExit {
         Update,
         (keys, colour_parts, hud, place_labels, vibration_cue),
     );
-    if let Some(shot) = options.screenshot {
-        // Reproducible pictures: every frame advances 1/30 s, however slow the renderer.
-        app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f64(
-            1.0 / 30.0,
-        )))
-        .insert_resource(shot)
-        .add_systems(Last, shot_and_exit);
+    if let Some(shot) = shot {
+        // Reproducible pictures: the window at a given frame, every frame 1/30 s.
+        app.add_plugins(shot);
     }
     app.run()
-}
-
-/// Command line: `--screenshot PATH --frames N`.
-struct Options {
-    screenshot: Option<ShotAt>,
-}
-
-/// Where and when to save the window.
-#[derive(Resource, Clone)]
-struct ShotAt {
-    path: String,
-    frame: u32,
-}
-
-impl Options {
-    fn parse(mut args: impl Iterator<Item = String>) -> Result<Options, String> {
-        let (mut path, mut frames) = (None, 120u32);
-        while let Some(arg) = args.next() {
-            match arg.as_str() {
-                "--screenshot" => path = Some(args.next().ok_or("--screenshot needs a path")?),
-                "--frames" => {
-                    let n = args.next().ok_or("--frames needs a number")?;
-                    frames = n
-                        .parse()
-                        .map_err(|_| format!("--frames: not a number: {n}"))?;
-                }
-                other => return Err(format!("unknown argument {other}")),
-            }
-        }
-        Ok(Options {
-            screenshot: path.map(|path| ShotAt {
-                path,
-                frame: frames.max(1),
-            }),
-        })
-    }
 }
 
 /// What the theories say the lanes do.
@@ -713,29 +671,5 @@ fn vibration_cue(
             transform.transform_point(Vec3::new(x, y, 0.26))
         });
         gizmos.linestrip(points, Color::srgb(0.4, 0.7, 1.0));
-    }
-}
-
-/// `--screenshot PATH --frames N`: save the window at frame N and exit; a screenshot that
-/// never arrives ends the run with an error instead of hanging it.
-fn shot_and_exit(
-    mut commands: Commands,
-    frames: Res<FrameCount>,
-    shot: Res<ShotAt>,
-    mut exit: MessageWriter<AppExit>,
-) {
-    if frames.0 == shot.frame {
-        let path = shot.path.clone();
-        commands.spawn(Screenshot::primary_window()).observe(
-            move |captured: On<ScreenshotCaptured>, mut exit: MessageWriter<AppExit>| {
-                save_to_disk(path.clone())(captured);
-                info!("saved {path}");
-                exit.write(AppExit::Success);
-            },
-        );
-    }
-    if frames.0 > shot.frame + 300 {
-        error!("no screenshot {} frames after it was requested", 300);
-        exit.write(AppExit::error());
     }
 }

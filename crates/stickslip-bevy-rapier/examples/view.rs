@@ -27,19 +27,16 @@
 //!     --screenshot incline.png --frames 90
 //! ```
 
-use bevy::diagnostic::FrameCount;
 use bevy::prelude::*;
-use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured, save_to_disk};
-use bevy::time::TimeUpdateStrategy;
 use bevy_rapier3d::prelude::*;
 use bevy_rapier3d::rapier::geometry::ShapeType;
 use std::path::PathBuf;
-use std::time::Duration;
 use stickslip_bevy_rapier::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
 use stickslip_bevy_rapier::scenario::{
     DriverAction, LoadedScenario, Scenario, StickSlipScenarioPlugin, despawn_scenario,
     spawn_scenario,
 };
+use stickslip_bevy_rapier::window::{ScreenshotAndExit, has_display};
 use stickslip_bevy_rapier::{StickSlipContacts, StickSlipRapier, StickSlipRapierPlugin};
 use stickslip_core::law::Regime;
 
@@ -47,18 +44,22 @@ use stickslip_core::law::Regime;
 const WINDOW: (u32, u32) = (1280, 720);
 
 fn main() -> AppExit {
-    let options = match Options::parse(std::env::args().skip(1)) {
-        Ok(o) => o,
+    let usage = "view [SCENARIO.toml] [--screenshot PATH] [--frames N]";
+    let (shot, file) = match ScreenshotAndExit::from_args(std::env::args().skip(1), 120) {
+        Ok((shot, rest)) if rest.len() <= 1 => (shot, rest.into_iter().next()),
+        Ok((_, rest)) => {
+            eprintln!("one scenario file only: {rest:?}\nusage: {usage}");
+            return AppExit::error();
+        }
         Err(e) => {
             eprintln!(
-                "{e}\nusage: view [SCENARIO.toml] [--screenshot PATH] [--frames N]\n\
-                 (without a file: the built-in scenario of `stickslip run`)"
+                "{e}\nusage: {usage}\n(without a file: the built-in scenario of `stickslip run`)"
             );
             return AppExit::error();
         }
     };
     // Errors in the file (with field and line) before any window opens.
-    let source = Source(options.scenario.clone());
+    let source = Source(file.map(PathBuf::from));
     let scenario = match source.load() {
         Ok(s) => s,
         Err(e) => {
@@ -66,11 +67,7 @@ fn main() -> AppExit {
             return AppExit::error();
         }
     };
-    if std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none() {
-        eprintln!(
-            "no display: run this example on a desktop, or under Xvfb: \
-             xvfb-run -a -s \"-screen 0 1280x720x24\" <binary> FILE --screenshot out.png"
-        );
+    if !has_display(usage) {
         return AppExit::error();
     }
     let mut app = App::new();
@@ -98,57 +95,11 @@ fn main() -> AppExit {
         Update,
         (keys, add_meshes, colour_bodies, draw_springs, hud).chain(),
     );
-    if let Some(shot) = options.screenshot {
-        // Reproducible pictures: every frame advances 1/30 s, however slow the renderer.
-        app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f64(
-            1.0 / 30.0,
-        )))
-        .insert_resource(shot)
-        .add_systems(Last, shot_and_exit);
+    if let Some(shot) = shot {
+        // Reproducible pictures: the window at a given frame, every frame 1/30 s.
+        app.add_plugins(shot);
     }
     app.run()
-}
-
-/// Command line: `[FILE] --screenshot PATH --frames N`.
-struct Options {
-    scenario: Option<PathBuf>,
-    screenshot: Option<ShotAt>,
-}
-
-/// Where and when to save the window.
-#[derive(Resource, Clone)]
-struct ShotAt {
-    path: String,
-    frame: u32,
-}
-
-impl Options {
-    fn parse(mut args: impl Iterator<Item = String>) -> Result<Options, String> {
-        let (mut scenario, mut path, mut frames) = (None, None, 120u32);
-        while let Some(arg) = args.next() {
-            match arg.as_str() {
-                "--screenshot" => path = Some(args.next().ok_or("--screenshot needs a path")?),
-                "--frames" => {
-                    let n = args.next().ok_or("--frames needs a number")?;
-                    frames = n
-                        .parse()
-                        .map_err(|_| format!("--frames: not a number: {n}"))?;
-                }
-                other if other.starts_with("--") => {
-                    return Err(format!("unknown option {other}"));
-                }
-                file if scenario.is_none() => scenario = Some(PathBuf::from(file)),
-                extra => return Err(format!("one scenario file only: {extra}")),
-            }
-        }
-        Ok(Options {
-            scenario,
-            screenshot: path.map(|path| ShotAt {
-                path,
-                frame: frames.max(1),
-            }),
-        })
-    }
 }
 
 /// Where the scenario comes from: a file (read again on reload) or the built-in one.
@@ -482,28 +433,4 @@ fn wrap(text: &str, width: usize) -> String {
         line += word.len();
     }
     out
-}
-
-/// `--screenshot PATH --frames N`: save the window at frame N and exit; a screenshot that
-/// never arrives ends the run with an error instead of hanging it.
-fn shot_and_exit(
-    mut commands: Commands,
-    frames: Res<FrameCount>,
-    shot: Res<ShotAt>,
-    mut exit: MessageWriter<AppExit>,
-) {
-    if frames.0 == shot.frame {
-        let path = shot.path.clone();
-        commands.spawn(Screenshot::primary_window()).observe(
-            move |captured: On<ScreenshotCaptured>, mut exit: MessageWriter<AppExit>| {
-                save_to_disk(path.clone())(captured);
-                info!("saved {path}");
-                exit.write(AppExit::Success);
-            },
-        );
-    }
-    if frames.0 > shot.frame + 300 {
-        error!("no screenshot {} frames after it was requested", 300);
-        exit.write(AppExit::error());
-    }
 }

@@ -55,6 +55,9 @@ pub use state::StickSlipRapier;
 /// this plugin's contact read-back on.
 #[cfg(feature = "debug")]
 pub use stickslip_bevy::debug;
+/// Windowed apps' support (feature `window`): command line, display check, screenshots.
+#[cfg(feature = "window")]
+pub use stickslip_bevy::window;
 pub use stickslip_bevy::{
     ContactReport, RegimeChanged, StickSlipContacts, StickSlipFriction, StickSlipVibration,
     SurfaceVelocity,

@@ -7,7 +7,9 @@
 //!   belt's moving surface);
 //! - the read-back: [`StickSlipContacts`], the contacts of the last physics step as
 //!   [`ContactReport`]s whose colliders are entities, and the [`RegimeChanged`] message;
-//! - the contact gizmos (feature `debug`, [`debug::StickSlipDebugPlugin`]).
+//! - the contact gizmos (feature `debug`, [`debug::StickSlipDebugPlugin`]);
+//! - what windowed apps share (feature `window`): their command line, the display check and
+//!   a screenshot at a given frame ([`window::ScreenshotAndExit`]).
 //!
 //! An app adds one add-on, which re-exports all of this: `stickslip-bevy-rapier`
 //! (bevy_rapier3d) or `stickslip-avian` (avian3d). Moving an app from one to the other changes
@@ -18,6 +20,8 @@ mod components;
 #[cfg(feature = "debug")]
 pub mod debug;
 mod read_back;
+#[cfg(feature = "window")]
+pub mod window;
 
 pub use components::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
 pub use read_back::{ContactReport, RegimeChanged, StickSlipContacts};
