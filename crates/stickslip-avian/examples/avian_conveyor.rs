@@ -38,7 +38,7 @@
 use avian3d::prelude::*;
 use bevy::prelude::*;
 use stickslip_avian::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
-use stickslip_avian::window::{ScreenshotAndExit, has_display};
+use stickslip_avian::window::command_line;
 use stickslip_avian::{
     FrictionMaterial, StickSlipAvianPlugin, StickSlipContacts, StickSlipFriction,
     StickSlipVibration, VibrationSource,
@@ -80,21 +80,10 @@ const HALF: f32 = 0.04;
 const SETTLE: [f64; 3] = [0.2, 0.2, 1.5];
 
 fn main() -> AppExit {
-    let usage = "avian_conveyor [--screenshot PATH] [--frames N]";
-    let shot = match ScreenshotAndExit::from_args(std::env::args().skip(1), 120) {
-        Ok((shot, rest)) if rest.is_empty() => shot,
-        Ok((_, rest)) => {
-            eprintln!("unexpected arguments {rest:?}\nusage: {usage}");
-            return AppExit::error();
-        }
-        Err(e) => {
-            eprintln!("{e}\nusage: {usage}");
-            return AppExit::error();
-        }
-    };
-    if !has_display(usage) {
+    let Some((shot, _)) = command_line("avian_conveyor [--screenshot PATH] [--frames N]", 120, 0)
+    else {
         return AppExit::error();
-    }
+    };
     let mut app = App::new();
     app.add_plugins(DefaultPlugins.set(WindowPlugin {
         primary_window: Some(Window {

@@ -19,7 +19,7 @@
 
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
-use stickslip_bevy_rapier::window::{ScreenshotAndExit, has_display};
+use stickslip_bevy_rapier::window::command_line;
 use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapierPlugin, StickSlipVibration};
 use stickslip_core::law::Law;
 use stickslip_core::popov::{CompliantContact, Oscillation, free_drive_velocity};
@@ -106,21 +106,13 @@ struct Drive {
 }
 
 fn main() -> AppExit {
-    let usage = "bevy_elliptical_drive [--screenshot PATH] [--frames N]";
-    let shot = match ScreenshotAndExit::from_args(std::env::args().skip(1), 90) {
-        Ok((shot, rest)) if rest.is_empty() => shot,
-        Ok((_, rest)) => {
-            eprintln!("unexpected arguments {rest:?}\nusage: {usage}");
-            return AppExit::error();
-        }
-        Err(e) => {
-            eprintln!("{e}\nusage: {usage}");
-            return AppExit::error();
-        }
-    };
-    if !has_display(usage) {
+    let Some((shot, _)) = command_line(
+        "bevy_elliptical_drive [--screenshot PATH] [--frames N]",
+        90,
+        0,
+    ) else {
         return AppExit::error();
-    }
+    };
     let mut app = App::new();
     app.add_plugins(DefaultPlugins.set(WindowPlugin {
         primary_window: Some(Window {

@@ -42,7 +42,7 @@ use bevy_rapier3d::plugin::RapierTransformPropagateSet;
 use bevy_rapier3d::prelude::*;
 use std::f32::consts::FRAC_PI_6;
 use stickslip_bevy_rapier::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
-use stickslip_bevy_rapier::window::{ScreenshotAndExit, has_display};
+use stickslip_bevy_rapier::window::command_line;
 use stickslip_bevy_rapier::{
     StickSlipContacts, StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin,
     StickSlipVibration,
@@ -90,21 +90,13 @@ const SETTLE: [f64; 3] = [0.2, 1.5, 0.4];
 const SAMPLE_STEPS: [u64; 3] = [1, 1, (PHYSICS_HZ / FEEDER.1 as f64) as u64];
 
 fn main() -> AppExit {
-    let usage = "vibrating_conveyor [--screenshot PATH] [--frames N]";
-    let shot = match ScreenshotAndExit::from_args(std::env::args().skip(1), 120) {
-        Ok((shot, rest)) if rest.is_empty() => shot,
-        Ok((_, rest)) => {
-            eprintln!("unexpected arguments {rest:?}\nusage: {usage}");
-            return AppExit::error();
-        }
-        Err(e) => {
-            eprintln!("{e}\nusage: {usage}");
-            return AppExit::error();
-        }
-    };
-    if !has_display(usage) {
+    let Some((shot, _)) = command_line(
+        "vibrating_conveyor [--screenshot PATH] [--frames N]",
+        120,
+        0,
+    ) else {
         return AppExit::error();
-    }
+    };
     let mut app = App::new();
     app.add_plugins(DefaultPlugins.set(WindowPlugin {
         primary_window: Some(Window {

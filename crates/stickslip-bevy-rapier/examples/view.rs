@@ -36,7 +36,7 @@ use stickslip_bevy_rapier::scenario::{
     DriverAction, LoadedScenario, Scenario, StickSlipScenarioPlugin, despawn_scenario,
     spawn_scenario,
 };
-use stickslip_bevy_rapier::window::{ScreenshotAndExit, has_display};
+use stickslip_bevy_rapier::window::command_line;
 use stickslip_bevy_rapier::{StickSlipContacts, StickSlipRapier, StickSlipRapierPlugin};
 use stickslip_core::law::Regime;
 
@@ -44,22 +44,13 @@ use stickslip_core::law::Regime;
 const WINDOW: (u32, u32) = (1280, 720);
 
 fn main() -> AppExit {
+    // Without a file: the built-in scenario of `stickslip run`.
     let usage = "view [SCENARIO.toml] [--screenshot PATH] [--frames N]";
-    let (shot, file) = match ScreenshotAndExit::from_args(std::env::args().skip(1), 120) {
-        Ok((shot, rest)) if rest.len() <= 1 => (shot, rest.into_iter().next()),
-        Ok((_, rest)) => {
-            eprintln!("one scenario file only: {rest:?}\nusage: {usage}");
-            return AppExit::error();
-        }
-        Err(e) => {
-            eprintln!(
-                "{e}\nusage: {usage}\n(without a file: the built-in scenario of `stickslip run`)"
-            );
-            return AppExit::error();
-        }
+    let Some((shot, files)) = command_line(usage, 120, 1) else {
+        return AppExit::error();
     };
     // Errors in the file (with field and line) before any window opens.
-    let source = Source(file.map(PathBuf::from));
+    let source = Source(files.into_iter().next().map(PathBuf::from));
     let scenario = match source.load() {
         Ok(s) => s,
         Err(e) => {
@@ -67,9 +58,6 @@ fn main() -> AppExit {
             return AppExit::error();
         }
     };
-    if !has_display(usage) {
-        return AppExit::error();
-    }
     let mut app = App::new();
     app.add_plugins(DefaultPlugins.set(WindowPlugin {
         primary_window: Some(Window {

@@ -90,6 +90,27 @@ fn shot_and_exit(
     }
 }
 
+/// The command line of a windowed app: `--screenshot PATH --frames N` (default `frames`) and
+/// at most `files` other arguments, which it returns; and a display to open the window on.
+/// `None` when either is missing: it has said why on standard error, with `usage`.
+pub fn command_line(
+    usage: &str,
+    frames: u32,
+    files: usize,
+) -> Option<(Option<ScreenshotAndExit>, Vec<String>)> {
+    match ScreenshotAndExit::from_args(std::env::args().skip(1), frames) {
+        Ok((shot, rest)) if rest.len() <= files => has_display(usage).then_some((shot, rest)),
+        Ok((_, rest)) => {
+            eprintln!("unexpected arguments {rest:?}\nusage: {usage}");
+            None
+        }
+        Err(e) => {
+            eprintln!("{e}\nusage: {usage}");
+            None
+        }
+    }
+}
+
 /// Whether a window can open here (an X11 or Wayland display); if not, it says how to run the
 /// app `usage` under Xvfb, on standard error.
 pub fn has_display(usage: &str) -> bool {
