@@ -210,20 +210,17 @@ pub(crate) fn apply(
             };
             let out = step_contact(
                 &mut record.state,
-                &ContactInput {
-                    law,
-                    source,
-                    rel,
-                    basis: &basis,
-                    normal_force: record.measured.normal_force,
-                    measured_mu: basis.project(record.measured.mu),
-                    slip,
-                    dt,
-                    time,
-                    inv_mass: (m1.inv_mass + m2.inv_mass) as f64,
-                    stiffness_time: world.config.stiffness_time,
-                    warm_start,
-                },
+                &ContactInput::new(law, &basis, dt)
+                    .with_solve(
+                        record.measured.normal_force,
+                        basis.project(record.measured.mu),
+                        slip,
+                    )
+                    .with_source(source, rel)
+                    .at_time(time)
+                    .with_inv_mass((m1.inv_mass + m2.inv_mass) as f64)
+                    .with_stiffness_time(world.config.stiffness_time)
+                    .with_warm_start(warm_start),
             );
             record.tick = tick;
             record.slip = Vec3::from_array(basis.lift(slip));

@@ -66,20 +66,12 @@ fn input<'a>(
     basis: &'a TangentBasis,
     r: &Recorded,
 ) -> ContactInput<'a> {
-    ContactInput {
-        law,
-        source,
-        rel: 1.0,
-        basis,
-        normal_force: r.normal_force,
-        measured_mu: r.measured_mu,
-        slip: r.slip,
-        dt: DT,
-        time: r.time,
-        inv_mass: 1.0,
-        stiffness_time: 0.1,
-        warm_start: 1.0,
-    }
+    ContactInput::new(law, basis, DT)
+        .with_solve(r.normal_force, r.measured_mu, r.slip)
+        .with_source(source, 1.0)
+        .at_time(r.time)
+        .with_inv_mass(1.0)
+        .with_stiffness_time(0.1)
 }
 
 /// Runs `n` steps of a contact against the solver stand-in: `slip(k)` is the slip velocity

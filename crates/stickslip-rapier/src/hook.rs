@@ -284,20 +284,17 @@ impl<H> StickSlip<H> {
         let limit_before = rec.state.limit.to_bits();
         let out = step_contact(
             &mut rec.state,
-            &ContactInput {
-                law,
-                source,
-                rel,
-                basis: &basis,
-                normal_force: meas.normal_force,
-                measured_mu: basis.project(crate::tangent::world(meas.mu)),
-                slip,
-                dt,
-                time: self.clock.time,
-                inv_mass: inv_mass(bodies, rb1) + inv_mass(bodies, rb2),
-                stiffness_time: self.config.stiffness_time,
-                warm_start,
-            },
+            &ContactInput::new(law, &basis, dt)
+                .with_solve(
+                    meas.normal_force,
+                    basis.project(crate::tangent::world(meas.mu)),
+                    slip,
+                )
+                .with_source(source, rel)
+                .at_time(self.clock.time)
+                .with_inv_mass(inv_mass(bodies, rb1) + inv_mass(bodies, rb2))
+                .with_stiffness_time(self.config.stiffness_time)
+                .with_warm_start(warm_start),
         );
         *m.friction = rec.state.limit;
         if out.target != [0.0; 2] {

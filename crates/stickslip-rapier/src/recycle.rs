@@ -324,20 +324,11 @@ impl Ahead<'_> {
                 let (slip, inv_mass, at_rest) = motion;
                 let out = step_contact(
                     &mut rec.state,
-                    &ContactInput {
-                        law,
-                        source: None,
-                        rel: 1.0,
-                        basis: &basis,
-                        normal_force: meas.normal_force,
-                        measured_mu,
-                        slip,
-                        dt,
-                        time: self.time,
-                        inv_mass,
-                        stiffness_time: self.stiffness_time,
-                        warm_start: 1.0,
-                    },
+                    &ContactInput::new(law, &basis, dt)
+                        .with_solve(meas.normal_force, measured_mu, slip)
+                        .at_time(self.time)
+                        .with_inv_mass(inv_mass)
+                        .with_stiffness_time(self.stiffness_time),
                 );
                 Some((out, at_rest))
             });

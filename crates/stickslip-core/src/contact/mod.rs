@@ -17,19 +17,10 @@
 //! // A 2D contact on a floor (normal +y), 100 N of load.
 //! let basis = TangentBasis::line([0.0, 1.0]);
 //! let mut state = ContactState::default();
-//! let input = |mu: f64, slip: f64| ContactInput {
-//!     law: &law,
-//!     source: None,
-//!     rel: 1.0,
-//!     basis: &basis,
-//!     normal_force: 100.0,
-//!     measured_mu: [mu, 0.0],
-//!     slip: [slip, 0.0],
-//!     dt: 1.0 / 60.0,
-//!     time: 0.0,
-//!     inv_mass: 0.1,
-//!     stiffness_time: 1.0,
-//!     warm_start: 1.0,
+//! let input = |mu: f64, slip: f64| {
+//!     ContactInput::new(&law, &basis, 1.0 / 60.0)
+//!         .with_solve(100.0, [mu, 0.0], [slip, 0.0])
+//!         .with_inv_mass(0.1)
 //! };
 //! // The solver held a push of 0.3 of the load under the law's limit: the contact holds and
 //! // the solver gets the law's static capacity as its limit.

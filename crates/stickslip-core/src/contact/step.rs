@@ -107,7 +107,11 @@ const DIRECT_MARGIN: f64 = 1e3;
 const ALIGNED: f64 = 0.999;
 
 /// What the last solve left at a contact patch, and what governs it.
+///
+/// Built with [`ContactInput::new`] and the `with_*` methods (the type grows with the kernel,
+/// so it has no public literal); the fields can be read.
 #[derive(Debug, Clone, Copy)]
+#[non_exhaustive]
 pub struct ContactInput<'a> {
     /// The contact's friction law.
     pub law: &'a Law,
@@ -137,6 +141,77 @@ pub struct ContactInput<'a> {
     /// Share of the last solve's normal impulse the solver starts this step with (1 unless
     /// rapier re-picked the points of a clustered patch).
     pub warm_start: f64,
+}
+
+impl<'a> ContactInput<'a> {
+    /// A contact governed by `law` in the tangent plane `basis`, stepped by `dt` seconds;
+    /// before any `with_*`: no load, no slip, no vibration source, bodies of infinite mass,
+    /// time 0, the default averaging time of the mean normal force (1 s) and a full warm start.
+    #[inline]
+    pub fn new(law: &'a Law, basis: &'a TangentBasis, dt: f64) -> Self {
+        Self {
+            law,
+            source: None,
+            rel: 1.0,
+            basis,
+            normal_force: 0.0,
+            measured_mu: [0.0; 2],
+            slip: [0.0; 2],
+            dt,
+            time: 0.0,
+            inv_mass: 0.0,
+            stiffness_time: 1.0,
+            warm_start: 1.0,
+        }
+    }
+
+    /// What the last solve left: its normal force (N), its friction over normal impulse μ⃗
+    /// and the touching points' slip velocity (m/s), both in the tangent plane (see the
+    /// fields).
+    #[inline]
+    pub fn with_solve(mut self, normal_force: f64, measured_mu: Vec2, slip: Vec2) -> Self {
+        self.normal_force = normal_force;
+        self.measured_mu = measured_mu;
+        self.slip = slip;
+        self
+    }
+
+    /// The vibration source of either collider, with `rel` = −1 when it is on collider 1
+    /// and +1 otherwise.
+    #[inline]
+    pub fn with_source(mut self, source: Option<&'a VibrationSource>, rel: f64) -> Self {
+        self.source = source;
+        self.rel = rel;
+        self
+    }
+
+    /// The time at the start of the step (s).
+    #[inline]
+    pub fn at_time(mut self, time: f64) -> Self {
+        self.time = time;
+        self
+    }
+
+    /// The sum of the two bodies' inverse masses (1/kg).
+    #[inline]
+    pub fn with_inv_mass(mut self, inv_mass: f64) -> Self {
+        self.inv_mass = inv_mass;
+        self
+    }
+
+    /// The averaging time of the mean normal force (s).
+    #[inline]
+    pub fn with_stiffness_time(mut self, stiffness_time: f64) -> Self {
+        self.stiffness_time = stiffness_time;
+        self
+    }
+
+    /// The share of the last solve's normal impulse the solver starts this step with.
+    #[inline]
+    pub fn with_warm_start(mut self, warm_start: f64) -> Self {
+        self.warm_start = warm_start;
+        self
+    }
 }
 
 /// What the solver gets for the next step.
