@@ -19,7 +19,7 @@
 # Features of the default selection.
 STICKSLIP_FEATURES="stickslip-bevy-rapier/window,stickslip-bevy-rapier/scenario,stickslip-bevy-rapier/debug,stickslip-avian/window,stickslip-avian/debug"
 # The same with rapier's multi-threaded narrow phase and solver in the 3D and 2D adapters.
-STICKSLIP_PARALLEL_FEATURES="$STICKSLIP_FEATURES,stickslip/parallel,stickslip-fixtures/parallel,stickslip-rapier2d/parallel"
+STICKSLIP_PARALLEL_FEATURES="$STICKSLIP_FEATURES,stickslip/parallel,stickslip-fixtures/parallel,stickslip-fixtures2d/parallel,stickslip-rapier2d/parallel"
 export STICKSLIP_FEATURES STICKSLIP_PARALLEL_FEATURES
 
 export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$HOME/.cache/stickslip-target}"

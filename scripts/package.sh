@@ -10,8 +10,8 @@
 # share their sources with stickslip-rapier and stickslip-scenario through a `src` link, which
 # `cargo package` follows and copies in (the way rapier publishes rapier2d and rapier3d from
 # one source). Internal crates stay unpublished (`publish = false`) and out of this:
-# stickslip-fixtures and stickslip-fixtures-035 (the reference scenes and the rapier tests, on
-# rapier 0.36 and 0.35) and stickslip-benches; nothing published depends on them (a path-only
+# stickslip-fixtures, stickslip-fixtures-035 and stickslip-fixtures2d (the reference scenes and
+# the rapier tests, on rapier 0.36, 0.35 and rapier2d) and stickslip-benches; nothing published depends on them (a path-only
 # dev-dependency is dropped from the package).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -39,7 +39,7 @@ rm -rf "$target"/package "$target"/debug/.fingerprint/stickslip* "$target"/debug
 
 # --allow-dirty: a local run packages the working tree as it is (CI packages a clean clone).
 # (The profiles name dependencies of every crate; each package warns about the others'.)
-cargo package --workspace --exclude stickslip-fixtures --exclude stickslip-fixtures-035 \
+cargo package --workspace --exclude stickslip-fixtures --exclude stickslip-fixtures-035 --exclude stickslip-fixtures2d \
     --exclude stickslip-benches \
     --allow-dirty --config "$profiles" --target-dir "$target" 2>&1 |
     grep -v "^warning: profile package spec"

@@ -5,6 +5,30 @@
 
 use stickslip_rapier::rapier::prelude::*;
 
+/// A vector from its 3D components; the fixtures' 2D build (cfg `dim2`) drops z.
+fn v3(x: f32, y: f32, z: f32) -> Vector {
+    #[cfg(dim2)]
+    let v = {
+        let _ = z;
+        Vector::new(x, y)
+    };
+    #[cfg(not(dim2))]
+    let v = Vector::new(x, y, z);
+    v
+}
+
+/// A cuboid collider from its 3D half-extents and its volume (area in 2D, z dropped).
+fn cuboid3(hx: f32, hy: f32, hz: f32) -> (ColliderBuilder, f32) {
+    #[cfg(dim2)]
+    let c = {
+        let _ = hz;
+        (ColliderBuilder::cuboid(hx, hy), 4.0 * hx * hy)
+    };
+    #[cfg(not(dim2))]
+    let c = (ColliderBuilder::cuboid(hx, hy, hz), 8.0 * hx * hy * hz);
+    c
+}
+
 /// A box resting on a large fixed ground slab.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BoxOnGround {
@@ -54,21 +78,23 @@ impl BoxOnGround {
         let mut world = PhysicsWorld::default();
         world.integration_parameters.dt = self.dt;
         let (s, c) = (self.incline.sin() as f32, self.incline.cos() as f32);
-        world.gravity = Vector::new(self.gravity * s, -self.gravity * c, 0.0);
-        let ground = world.insert_collider(
-            ColliderBuilder::cuboid(200.0, 0.1, 50.0).friction(0.0),
-            None,
-        );
+        world.gravity = v3(self.gravity * s, -self.gravity * c, 0.0);
+        let ground = world.insert_collider(cuboid3(200.0, 0.1, 50.0).0.friction(0.0), None);
         let h = self.half;
-        let (body, box_collider) = world.insert(
-            RigidBodyBuilder::dynamic()
-                .translation(Vector::new(0.0, 0.1 + h, 0.0))
-                .can_sleep(false)
-                .enabled_rotations(self.rotations, self.rotations, self.rotations),
-            ColliderBuilder::cuboid(h, h, h)
-                .density(self.mass / (8.0 * h * h * h))
-                .friction(0.0),
-        );
+        let body = RigidBodyBuilder::dynamic()
+            .translation(v3(0.0, 0.1 + h, 0.0))
+            .can_sleep(false);
+        #[cfg(not(dim2))]
+        let body = body.enabled_rotations(self.rotations, self.rotations, self.rotations);
+        #[cfg(dim2)]
+        let body = if self.rotations {
+            body
+        } else {
+            body.lock_rotations()
+        };
+        let (cube, volume) = cuboid3(h, h, h);
+        let (body, box_collider) =
+            world.insert(body, cube.density(self.mass / volume).friction(0.0));
         BoxScene {
             world,
             body,
@@ -228,8 +254,8 @@ impl PopovDrag {
                 PopovDrive::Source(_) => 0.0,
             };
             let b = &mut scene.world.bodies[scene.body];
-            b.set_linvel(Vector::new(v0 as f32, b.linvel().y, 0.0), true);
-            scene.set_force(Vector::new(0.0, -((self.normal_force + extra) as f32), 0.0));
+            b.set_linvel(v3(v0 as f32, b.linvel().y, 0.0), true);
+            scene.set_force(v3(0.0, -((self.normal_force + extra) as f32), 0.0));
             modifier.step(&mut scene.world);
             if k >= warm * self.steps_per_period
                 && let Some(r) = modifier.reports().ok().and_then(|r| r.first())
@@ -292,7 +318,7 @@ pub fn example1_trace(
     let mut out = Vec::with_capacity(steps);
     for k in 0..steps {
         let t_mid = (k as f64 + 0.5) * dt;
-        scene.set_force(Vector::new(profile.value(t_mid) as f32, 0.0, 0.0));
+        scene.set_force(v3(profile.value(t_mid) as f32, 0.0, 0.0));
         modifier.step(&mut scene.world);
         // The report's friction force acts on collider 2 when it is the box.
         let friction = modifier
@@ -337,18 +363,19 @@ pub fn feeder_speed(
     world.integration_parameters.dt = dt as f32;
     let trough = world.insert_body(RigidBodyBuilder::kinematic_position_based());
     let trough_collider = world.insert_collider(
-        ColliderBuilder::cuboid(50.0, 0.05, 1.0).friction(mu as f32),
+        cuboid3(50.0, 0.05, 1.0).0.friction(mu as f32),
         Some(trough),
     );
     let half = 0.02f32;
     let (v0x, v0y) = feeder.trough_velocity(0.0);
     let (part, part_collider) = world.insert(
         RigidBodyBuilder::dynamic()
-            .translation(Vector::new(0.0, 0.05 + half, 0.0))
-            .linvel(Vector::new(v0x as f32, v0y as f32, 0.0))
+            .translation(v3(0.0, 0.05 + half, 0.0))
+            .linvel(v3(v0x as f32, v0y as f32, 0.0))
             .lock_rotations()
             .can_sleep(false),
-        ColliderBuilder::cuboid(half, half, half)
+        cuboid3(half, half, half)
+            .0
             .density(1000.0)
             .friction(mu as f32),
     );
@@ -370,7 +397,7 @@ pub fn feeder_speed(
     for k in 0..steps {
         let t_next = (k + 1) as f64 * dt;
         let (x, y) = feeder.trough_position(t_next);
-        world.bodies[trough].set_next_kinematic_translation(Vector::new(x as f32, y as f32, 0.0));
+        world.bodies[trough].set_next_kinematic_translation(v3(x as f32, y as f32, 0.0));
         match friction.as_mut() {
             Some(m) => m.step(&mut world),
             None => world.step(),

@@ -4,18 +4,26 @@
 //! scenes run beside plain rapier, and [`Conveyor`], a user's own hook to wrap.
 //!
 //! The package `stickslip-fixtures-035` compiles these same sources, and the same tests,
-//! against rapier 0.35 (cfg `rapier_035`).
+//! against rapier 0.35 (cfg `rapier_035`), and `stickslip-fixtures2d` for rapier2d (cfg
+//! `dim2`); what has no 2D form yet is `#[cfg(not(dim2))]`.
 
 // The figures' reference scenes: one file, which stickslip-figures compiles privately.
 #[path = "../../stickslip-figures/src/scenes.rs"]
 mod reference;
 
+#[cfg(not(dim2))]
 mod conveyor;
+#[cfg(not(dim2))]
 mod example1;
+#[cfg(not(dim2))]
 pub mod ordinary;
+#[cfg(not(dim2))]
 mod plate;
 
+#[cfg(not(dim2))]
 pub use conveyor::Conveyor;
+#[cfg(not(dim2))]
 pub use example1::example1;
+#[cfg(not(dim2))]
 pub use plate::{PlateMeasurement, VibratingPlate};
 pub use reference::*;

@@ -14,6 +14,7 @@
 //! more from where it was put than under the baseline plus g_ba (rapier's contact forming lets
 //! it slip some 10–100 µm in its first two steps, far beyond g_ba: the law must not take that
 //! for break-away and slide off at μ_k).
+#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
 mod ordinary;
 

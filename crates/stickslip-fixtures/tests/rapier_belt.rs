@@ -5,8 +5,9 @@
 //! stick-slip period is within 2 % of the analytic
 //! T = 2Δ/v_b + (π + 2 atan(v_b/(ωΔ)))/ω, ω = √(k/m), Δ = (μ_ba − μ_k) N/k; plain Coulomb
 //! (Δ = 0) gives the limit T = 2π/ω, the block only touching belt speed once a cycle.
+#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use rapier3d::prelude::*;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::{Coulomb, ElastoPlastic, Law, Physical};
 use stickslip_core::sliding_curve::Curve;
 use stickslip_fixtures::{BoxOnGround, Conveyor};

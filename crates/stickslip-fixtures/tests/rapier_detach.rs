@@ -2,8 +2,9 @@
 //! record or report involving the collider remains, its hook flag is off again, and the world
 //! continues bit for bit as a plain rapier world (no hooks) started from the same state would,
 //! with the pair's friction back to rapier's own combined coefficient.
+#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use rapier3d::prelude::*;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 use stickslip_rapier::{FrictionMaterial, StickSlip};

@@ -9,6 +9,7 @@
 //! normal load that drops to zero every period (Popov's mechanism lowers the mean friction), so
 //! EP approaches the rigid reference as c grows: its deviation does not grow from c = 1e5 to
 //! 1e7, and at c = 1e7 (g_ba = 50 nm) it is within 3 %.
+#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
 use stickslip_fixtures::feeder_speed;
 use stickslip_theory::feeder::VibratoryFeeder;

@@ -1,10 +1,12 @@
-//! A box on an incline in a real rapier world. Invariants: at 0.95 of the break-away angle
-//! (tan θ = 0.95 μ_ba) the elasto-plastic contact keeps the box within g_ba = μ_ba/c of its
-//! start over 10 s, while the regularized law creeps at its steady speed ġ_t0 tan θ/μ_ve
-//! within 2 % (plain rapier Coulomb is measured beside them); above the angle the box slides
-//! with a = g (sin θ − μ_k cos θ) within 2 %, μ_k being the law's steady sliding coefficient.
+//! A box on an incline in a real rapier world, 3D and 2D (stickslip-fixtures2d). Invariants:
+//! at 0.95 of the break-away angle (tan θ = 0.95 μ_ba) the elasto-plastic contact keeps the
+//! box within g_ba = μ_ba/c of its start over 10 s, while the regularized law creeps at its
+//! steady speed ġ_t0 tan θ/μ_ve within 2 % (plain rapier Coulomb is measured beside them);
+//! with a sliding coefficient μ_k = 0.4 below μ_ba = 0.5 the box also holds within g_ba at
+//! tan θ = 0.45, where plain rapier at μ_k slides; above the angle the box slides with
+//! a = g (sin θ − μ_k cos θ) within 2 %, μ_k being the law's steady sliding coefficient.
 
-use rapier3d::prelude::*;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::{Coulomb, FrictionLaw, Law, Regularization, Regularized};
 use stickslip_core::sliding_curve::Curve;
 use stickslip_fixtures::BoxOnGround;
@@ -112,11 +114,38 @@ fn sticks_below_break_away_without_creep() {
     );
 }
 
+/// The EP law of the tests with a sliding coefficient `mu_k` below its break-away μ_ba.
+fn ep_sliding_at(mu_k: f64) -> Law {
+    Law::elasto_plastic(C, MU_BA, MU_MAX, Curve::constant(mu_k).unwrap()).unwrap()
+}
+
+#[test]
+fn holds_between_kinetic_and_break_away_where_plain_rapier_slides() {
+    const MU_K: f64 = 0.4;
+    let g_ba = MU_BA / C;
+    for tan in [0.95 * MU_BA, 0.45] {
+        let (held, _) = creep(Some(ep_sliding_at(MU_K)), tan.atan(), MU_K as f32);
+        assert!(
+            held.abs() < g_ba,
+            "tan θ = {tan}: moved {held:e} m, elastic range {g_ba:e} m"
+        );
+    }
+    // Plain rapier at the sliding coefficient has no static friction above it.
+    let (plain, _) = creep(None, 0.45f64.atan(), MU_K as f32);
+    assert!(plain > 0.1, "plain rapier at μ = {MU_K} moved only {plain} m");
+}
+
 #[test]
 fn slides_above_break_away_with_kinetic_acceleration() {
-    let theta = 0.7f64.atan();
     let g = 9.81;
-    for law in [ep(), Law::Coulomb(Coulomb::new(MU_MAX).unwrap())] {
+    let cases = [
+        (0.7f64, ep()),
+        (0.7, Law::Coulomb(Coulomb::new(MU_MAX).unwrap())),
+        (0.6, ep_sliding_at(0.4)),
+        (1.2, ep_sliding_at(0.4)),
+    ];
+    for (tan, law) in cases {
+        let theta = tan.atan();
         let mu_k = law.sliding_coefficient(1.0);
         let mut scene = incline(theta);
         let mut m = StickSlip::new(FrictionMaterial::new(law.clone()))
@@ -135,10 +164,13 @@ fn slides_above_break_away_with_kinetic_acceleration() {
         let t = steps as f64 / 60.0;
         let a = 2.0 * (scene.x() - x0 - v0 * t) / (t * t);
         let expect = g * (theta.sin() - mu_k * theta.cos());
-        println!("{}: a = {a:.4}, expected {expect:.4}", law.name());
+        println!(
+            "{} at tan θ {tan}: a = {a:.4}, expected {expect:.4}",
+            law.name()
+        );
         assert!(
             ((a - expect) / expect).abs() < 0.02,
-            "{}: a {a} vs {expect}",
+            "{} at tan θ {tan}: a {a} vs {expect}",
             law.name()
         );
     }

@@ -11,8 +11,9 @@
 //! cuboid and a heightfield ground, for masses over four decades, at 60 and 240 Hz, with
 //! rapier's contact recycling on (stickslip's quiet contacts recycle) and off (every contact
 //! hooked every step).
+#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use rapier3d::prelude::*;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::{Law, Physical};
 use stickslip_core::sliding_curve::Curve;
 use stickslip_fixtures::ordinary::{Ground, box_on_slope};

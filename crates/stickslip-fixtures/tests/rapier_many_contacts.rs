@@ -9,8 +9,9 @@
 //! from a fresh sticking state instead of reusing the old sliding one. Pairs that rapier
 //! holds a manifold for without any solver contact (neighbours inside the prediction
 //! distance, not touching) keep no state at all.
+#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use rapier3d::prelude::*;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::{Law, Regime};
 use stickslip_core::sliding_curve::Curve;
 use stickslip_rapier::{FrictionMaterial, StickSlip};

@@ -12,8 +12,9 @@
 //! breaks away at μ_ba, where the hooked one does. A world saved while contacts are recycled,
 //! and piles on a heightfield and on a compound ground (composite contact patches, recycled or
 //! not), resume bit for bit.
+#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use rapier3d::prelude::*;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 use stickslip_fixtures::ordinary::{Ground, box_on_slope};

@@ -7,8 +7,9 @@
 //! velocity (within 1e-4 m/s) under every law — stickslip's own target velocities (Regul's
 //! creep, anchor corrections) are not a surface's motion; a box carried by a conveyor (a
 //! wrapped hook moving the belt's surface) reports no slip against the belt.
+#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use rapier3d::prelude::*;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::{FrictionLaw, Law, Physical, Regularization, Regularized};
 use stickslip_core::sliding_curve::Curve;
 use stickslip_rapier::{FrictionMaterial, ReadBack, StickSlip};

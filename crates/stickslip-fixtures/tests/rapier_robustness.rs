@@ -9,8 +9,9 @@
 //! overflow (or underflow) in a step — c·F_n beyond range, force amplitudes of 1e39 N,
 //! sliding curves reaching 1e30 — are refused by the constructors with the parameter's name
 //! and its admissible range.
+#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use rapier3d::prelude::*;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 use stickslip_core::waveform::Waveform;

@@ -6,8 +6,9 @@
 //! break-away slip g_ba = μ_ba/c); a contact whose box is lifted away loses its state within
 //! one sweep interval; the count of states equals the count of manifolds rapier holds with
 //! solver contacts.
+#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use rapier3d::prelude::*;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 use stickslip_rapier::{FrictionMaterial, SWEEP_INTERVAL, StickSlip};

@@ -6,8 +6,9 @@
 //! on the belt is woken when it starts; stopping the belt hands an unattached belt's hook
 //! flag back and the box comes to rest, and keeps a flag said to be the user's; a snapshot
 //! keeps the surface.
+#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use rapier3d::prelude::*;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 use stickslip_fixtures::{BoxOnGround, BoxScene};

@@ -3,7 +3,7 @@
 
 #![allow(dead_code)]
 
-use rapier3d::prelude::*;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::{Law, Regularization, Regularized};
 use stickslip_core::sliding_curve::Curve;
 use stickslip_fixtures::ordinary::OrdinaryScene;
