@@ -6,7 +6,7 @@
 use stickslip_rapier::rapier::prelude::*;
 
 /// A vector from its 3D components; the fixtures' 2D build (cfg `dim2`) drops z.
-fn v3(x: f32, y: f32, z: f32) -> Vector {
+pub fn v3(x: f32, y: f32, z: f32) -> Vector {
     #[cfg(dim2)]
     let v = {
         let _ = z;
@@ -18,7 +18,7 @@ fn v3(x: f32, y: f32, z: f32) -> Vector {
 }
 
 /// A cuboid collider from its 3D half-extents and its volume (area in 2D, z dropped).
-fn cuboid3(hx: f32, hy: f32, hz: f32) -> (ColliderBuilder, f32) {
+pub fn cuboid3(hx: f32, hy: f32, hz: f32) -> (ColliderBuilder, f32) {
     #[cfg(dim2)]
     let c = {
         let _ = hz;
@@ -362,10 +362,8 @@ pub fn feeder_speed(
     let mut world = PhysicsWorld::default();
     world.integration_parameters.dt = dt as f32;
     let trough = world.insert_body(RigidBodyBuilder::kinematic_position_based());
-    let trough_collider = world.insert_collider(
-        cuboid3(50.0, 0.05, 1.0).0.friction(mu as f32),
-        Some(trough),
-    );
+    let trough_collider =
+        world.insert_collider(cuboid3(50.0, 0.05, 1.0).0.friction(mu as f32), Some(trough));
     let half = 0.02f32;
     let (v0x, v0y) = feeder.trough_velocity(0.0);
     let (part, part_collider) = world.insert(

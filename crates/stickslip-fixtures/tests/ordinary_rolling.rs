@@ -14,10 +14,10 @@
 mod ordinary;
 
 use ordinary::{Friction, Run, all_laws, rel};
-use stickslip_rapier::rapier::prelude::*;
 use stickslip_fixtures::ordinary::{
     CART_WHEEL_RADIUS, Ground, Roller, box_with_balls, cart, roll_inertia_ratio, roller_on_slope,
 };
+use stickslip_rapier::rapier::prelude::*;
 
 const G: f64 = 9.81;
 const R: f32 = 0.2;

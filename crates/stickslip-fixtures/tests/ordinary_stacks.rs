@@ -13,8 +13,8 @@
 mod ordinary;
 
 use ordinary::{Friction, Run, all_laws, ep};
-use stickslip_rapier::rapier::prelude::*;
 use stickslip_fixtures::ordinary::{Stack, dominoes, spinning_box, stack};
+use stickslip_rapier::rapier::prelude::*;
 
 const DT: f64 = 1.0 / 60.0;
 

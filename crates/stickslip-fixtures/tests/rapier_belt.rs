@@ -7,10 +7,10 @@
 //! (Δ = 0) gives the limit T = 2π/ω, the block only touching belt speed once a cycle.
 #![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::{Coulomb, ElastoPlastic, Law, Physical};
 use stickslip_core::sliding_curve::Curve;
 use stickslip_fixtures::{BoxOnGround, Conveyor};
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, StickSlip};
 
 const M: f64 = 1.0;

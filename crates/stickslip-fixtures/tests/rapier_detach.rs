@@ -4,9 +4,9 @@
 //! with the pair's friction back to rapier's own combined coefficient.
 #![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, StickSlip};
 
 /// Two boxes resting and being pushed on a ground: one pair to detach, one to keep.

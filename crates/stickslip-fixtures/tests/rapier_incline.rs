@@ -6,10 +6,10 @@
 //! tan θ = 0.45, where plain rapier at μ_k slides; above the angle the box slides with
 //! a = g (sin θ − μ_k cos θ) within 2 %, μ_k being the law's steady sliding coefficient.
 
-use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::{Coulomb, FrictionLaw, Law, Regularization, Regularized};
 use stickslip_core::sliding_curve::Curve;
 use stickslip_fixtures::BoxOnGround;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, StickSlip};
 
 fn incline(theta: f64) -> stickslip_fixtures::BoxScene {
@@ -132,7 +132,10 @@ fn holds_between_kinetic_and_break_away_where_plain_rapier_slides() {
     }
     // Plain rapier at the sliding coefficient has no static friction above it.
     let (plain, _) = creep(None, 0.45f64.atan(), MU_K as f32);
-    assert!(plain > 0.1, "plain rapier at μ = {MU_K} moved only {plain} m");
+    assert!(
+        plain > 0.1,
+        "plain rapier at μ = {MU_K} moved only {plain} m"
+    );
 }
 
 #[test]

@@ -13,10 +13,10 @@
 //! hooked every step).
 #![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::{Law, Physical};
 use stickslip_core::sliding_curve::Curve;
 use stickslip_fixtures::ordinary::{Ground, box_on_slope};
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, StickSlip};
 
 const MU_BA: f64 = 0.5;

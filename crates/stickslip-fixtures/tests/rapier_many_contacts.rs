@@ -11,9 +11,9 @@
 //! distance, not touching) keep no state at all.
 #![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::{Law, Regime};
 use stickslip_core::sliding_curve::Curve;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, StickSlip};
 
 const N: usize = 300;

@@ -6,9 +6,9 @@
 //! reports, step by step, its weight plus the force within 2 % of m g.
 #![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, ReadBack, StickSlip};
 
 const G: f64 = 9.81;

@@ -14,10 +14,10 @@
 //! not), resume bit for bit.
 #![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 use stickslip_fixtures::ordinary::{Ground, box_on_slope};
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, StickSlip, WorldSnapshot};
 
 const MU_BA: f64 = 0.5;

@@ -9,9 +9,9 @@
 //! wrapped hook moving the belt's surface) reports no slip against the belt.
 #![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::{FrictionLaw, Law, Physical, Regularization, Regularized};
 use stickslip_core::sliding_curve::Curve;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, ReadBack, StickSlip};
 
 const HALF: f32 = 0.2;

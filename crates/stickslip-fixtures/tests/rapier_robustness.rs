@@ -11,11 +11,11 @@
 //! and its admissible range.
 #![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 use stickslip_core::waveform::Waveform;
 use stickslip_fixtures::BoxOnGround;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{
     Amplitude, FrictionMaterial, StickSlip, VibrationDirection, VibrationMode, VibrationSource,
 };

@@ -8,9 +8,9 @@
 //! solver contacts.
 #![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, SWEEP_INTERVAL, StickSlip};
 
 const MU_BA: f64 = 0.5;

@@ -10,11 +10,11 @@
 //! inconsistent snapshot data, give an error and never a panic.
 #![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::{Law, Physical, Regularization, Regularized};
 use stickslip_core::sliding_curve::{Curve, StribeckDecay};
 use stickslip_core::waveform::Waveform;
 use stickslip_fixtures::Conveyor;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::snapshot::SnapshotError;
 use stickslip_rapier::{
     Amplitude, ContactReport, FrictionMaterial, StickSlip, StickSlipSnapshot, VibrationDirection,

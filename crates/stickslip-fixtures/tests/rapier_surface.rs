@@ -8,10 +8,10 @@
 //! keeps the surface.
 #![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 use stickslip_fixtures::{BoxOnGround, BoxScene};
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, StickSlip};
 
 const G: f64 = 9.81;

@@ -16,12 +16,12 @@
 //! friction model and a step dt out of range (not a pause, dt = 0) log a warning once.
 #![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
-use stickslip_rapier::rapier::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Mutex, OnceLock};
 use std::time::Duration;
 use stickslip_core::law::{FrictionLaw, Law};
 use stickslip_core::sliding_curve::Curve;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, NotReadBack, ReadBack, StickSlip};
 
 const G: f64 = 9.81;

@@ -3,10 +3,10 @@
 
 #![allow(dead_code)]
 
-use stickslip_rapier::rapier::prelude::*;
 use stickslip_core::law::{Law, Regularization, Regularized};
 use stickslip_core::sliding_curve::Curve;
 use stickslip_fixtures::ordinary::OrdinaryScene;
+use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, ReadBack, StickSlip};
 
 /// Who decides the friction of a scene.
