@@ -13,6 +13,7 @@ mod reference;
 
 #[cfg(not(dim2))]
 mod conveyor;
+pub mod dim;
 #[cfg(not(dim2))]
 mod example1;
 #[cfg(not(dim2))]

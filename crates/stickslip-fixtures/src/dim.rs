@@ -1,0 +1,31 @@
+//! What differs between the 3D and the 2D build of the tests (cfg `dim2`), so a test is
+//! written once: a body's state as bits, a spin about the plane's normal. (Vectors and
+//! cuboids from 3D components: [`crate::v3`], [`crate::cuboid3`].)
+
+use stickslip_rapier::rapier::prelude::*;
+
+/// The bits of a body's pose (translation, rotation) and velocities (linear, angular).
+pub fn body_bits(b: &RigidBody) -> Vec<u32> {
+    let p = b.position();
+    let mut out: Vec<u32> = p.translation.to_array().map(f32::to_bits).to_vec();
+    out.extend(b.linvel().to_array().map(f32::to_bits));
+    #[cfg(dim2)]
+    {
+        out.extend([p.rotation.cos(), p.rotation.sin(), b.angvel()].map(f32::to_bits));
+    }
+    #[cfg(not(dim2))]
+    {
+        out.extend(p.rotation.to_array().map(f32::to_bits));
+        out.extend(b.angvel().to_array().map(f32::to_bits));
+    }
+    out
+}
+
+/// An angular velocity of `w` (rad/s) about z, the 2D plane's normal.
+pub fn spin(w: f32) -> AngVector {
+    #[cfg(dim2)]
+    let s = w;
+    #[cfg(not(dim2))]
+    let s = Vector::new(0.0, 0.0, w);
+    s
+}
