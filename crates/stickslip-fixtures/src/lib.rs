@@ -20,6 +20,7 @@ mod example1;
 pub mod ordinary;
 #[cfg(not(dim2))]
 mod plate;
+mod sled;
 
 #[cfg(not(dim2))]
 pub use conveyor::Conveyor;
@@ -28,3 +29,4 @@ pub use example1::example1;
 #[cfg(not(dim2))]
 pub use plate::{PlateMeasurement, VibratingPlate};
 pub use reference::*;
+pub use sled::Sled;

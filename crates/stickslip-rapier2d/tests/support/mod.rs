@@ -1,5 +1,6 @@
-//! Shared 2D scenes of the rapier2d tests: a box on a ground under tilted gravity (an
-//! incline without rotated frames), the plain-rapier2d and stickslip steppers, materials.
+//! What the rapier2d tests not yet written once for both dimensions share (the others are
+//! crates/stickslip-fixtures/tests, built for 2D by stickslip-fixtures2d): the plain-rapier2d
+//! and stickslip steppers, materials, a user's conveyor hook.
 #![allow(dead_code)]
 
 use stickslip_rapier2d::core::law::Law;
@@ -13,57 +14,6 @@ pub const G: f64 = 9.81;
 /// The EP law of the tests: c = 1e4 1/m, μ_ba = 0.5, μ_max = 0.55, sliding at μ_k.
 pub fn ep(mu_k: f64) -> Law {
     Law::elasto_plastic(1e4, 0.5, 0.55, Curve::constant(mu_k).unwrap()).unwrap()
-}
-
-/// A box of half-extent 0.25 m (density 1000: 250 kg per m of depth) resting on a fixed
-/// ground, with gravity tilted by `theta` so that the ground is an incline descending
-/// towards +x.
-pub struct BoxOnIncline {
-    pub world: PhysicsWorld,
-    pub body: RigidBodyHandle,
-    pub ground: ColliderHandle,
-    pub cube: ColliderHandle,
-}
-
-impl BoxOnIncline {
-    pub fn new(theta: f64, friction: f32) -> Self {
-        let mut world = PhysicsWorld {
-            gravity: Vector::new((G * theta.sin()) as f32, -(G * theta.cos()) as f32),
-            ..PhysicsWorld::default()
-        };
-        let ground =
-            world.insert_collider(ColliderBuilder::cuboid(50.0, 0.1).friction(friction), None);
-        let (body, cube) = world.insert(
-            RigidBodyBuilder::dynamic()
-                .translation(Vector::new(0.0, 0.35))
-                .can_sleep(false),
-            ColliderBuilder::cuboid(0.25, 0.25)
-                .density(1000.0)
-                .friction(friction),
-        );
-        BoxOnIncline {
-            world,
-            body,
-            ground,
-            cube,
-        }
-    }
-
-    /// stickslip with `law` on both colliders.
-    pub fn attach(&mut self, law: Law) -> StickSlip {
-        let mut m = StickSlip::new(FrictionMaterial::new(law));
-        m.attach(&mut self.world.colliders, self.ground, None);
-        m.attach(&mut self.world.colliders, self.cube, None);
-        m
-    }
-
-    pub fn x(&self) -> f64 {
-        self.world.bodies[self.body].translation().x as f64
-    }
-
-    pub fn vx(&self) -> f64 {
-        self.world.bodies[self.body].linvel().x as f64
-    }
 }
 
 /// Steps `world` `n` times with `modifier`, or plain rapier2d without one.
@@ -86,87 +36,6 @@ pub fn run(world: &mut PhysicsWorld, modifier: Option<&mut StickSlip>, n: usize)
 /// `mu_s`, sliding at a flat `mu_k` (μ_k ≤ μ_s: static above kinetic friction).
 pub fn ep_flat(c: f64, mu_s: f64, mu_k: f64) -> Law {
     Law::elasto_plastic(c, mu_s, mu_s, Curve::constant(mu_k).unwrap()).unwrap()
-}
-
-/// A sled: a box of half-extent `half` and mass `mass`, rotations locked, on a long fixed
-/// plate whose top is y = 0.1, gravity off (the test presses it with a force), stepped at
-/// `dt`; both colliders' rapier friction `friction`, sleeping off.
-pub struct Sled {
-    pub world: PhysicsWorld,
-    pub body: RigidBodyHandle,
-    pub plate: ColliderHandle,
-    pub sled: ColliderHandle,
-}
-
-impl Sled {
-    pub fn new(half: f32, mass: f32, dt: f64, friction: f32) -> Self {
-        Sled::with_order(half, mass, dt, friction, false)
-    }
-
-    /// [`Sled::new`], the sled inserted before the plate when `sled_first` (rapier2d then
-    /// lists the sled as the pair's collider 1: the contact normal points down).
-    pub fn with_order(half: f32, mass: f32, dt: f64, friction: f32, sled_first: bool) -> Self {
-        let mut world = PhysicsWorld {
-            gravity: Vector::ZERO,
-            ..PhysicsWorld::default()
-        };
-        world.integration_parameters.dt = dt as f32;
-        let plate_builder = ColliderBuilder::cuboid(500.0, 0.1).friction(friction);
-        let body_builder = RigidBodyBuilder::dynamic()
-            .translation(Vector::new(0.0, 0.1 + half))
-            .lock_rotations()
-            .can_sleep(false);
-        let sled_builder = ColliderBuilder::cuboid(half, half)
-            .density(mass / (4.0 * half * half))
-            .friction(friction);
-        let (plate, (body, sled)) = if sled_first {
-            let bs = world.insert(body_builder, sled_builder);
-            (world.insert_collider(plate_builder, None), bs)
-        } else {
-            let p = world.insert_collider(plate_builder, None);
-            (p, world.insert(body_builder, sled_builder))
-        };
-        Sled {
-            world,
-            body,
-            plate,
-            sled,
-        }
-    }
-
-    /// stickslip with `law` on both colliders (the pair is the law's alone).
-    pub fn attach(&mut self, law: Law) -> StickSlip {
-        let mut m = StickSlip::new(FrictionMaterial::new(law));
-        m.attach(&mut self.world.colliders, self.plate, None);
-        m.attach(&mut self.world.colliders, self.sled, None);
-        m
-    }
-
-    pub fn x(&self) -> f64 {
-        self.world.bodies[self.body].translation().x as f64
-    }
-
-    pub fn vx(&self) -> f64 {
-        self.world.bodies[self.body].linvel().x as f64
-    }
-
-    pub fn mass(&self) -> f64 {
-        self.world.bodies[self.body].mass() as f64
-    }
-
-    /// Replaces the user forces on the sled by `force` (N, world).
-    pub fn set_force(&mut self, force: Vector) {
-        let b = &mut self.world.bodies[self.body];
-        b.reset_forces(true);
-        b.add_force(force, true);
-    }
-
-    /// Imposes the sled's velocity along x (keeping its normal velocity).
-    pub fn drive(&mut self, vx: f64) {
-        let b = &mut self.world.bodies[self.body];
-        let vy = b.linvel().y;
-        b.set_linvel(Vector::new(vx as f32, vy), true);
-    }
 }
 
 /// The user's conveyor hook: the `belt` collider's surface moves at `velocity` (world),

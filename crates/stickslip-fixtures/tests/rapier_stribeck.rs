@@ -1,4 +1,4 @@
-//! A sled dragged over a plate in a rapier2d world follows the sliding curve of its
+//! A sled dragged over a plate in a rapier world, 3D and 2D (stickslip-fixtures2d), follows the sliding curve of its
 //! elasto-plastic law. Invariant: a sled pressed onto a fixed plate by F = 9.81 N (gravity
 //! off) and dragged at an imposed speed v from 1 mm/s to 1 m/s (its horizontal velocity is
 //! set every step; it is heavy enough that one step's friction changes it by 1 %, so the
@@ -6,17 +6,17 @@
 //! friction coefficient μ_ve(v) of the law's Stribeck curve — falling from μ_ve(0+) towards the
 //! Coulomb level, then rising with the viscous term — within 2 %: measured from the sled's
 //! momentum (m Δv per step over F dt, no read-back involved) and from the contact reports,
-//! at 60 Hz and 240 Hz, whichever collider rapier2d lists first, with the default
+//! at 60 Hz and 240 Hz, whichever collider rapier lists first, with the default
 //! `StickSlipConfig`, also on a plate turned off the axes (contact normals along no world
-//! axis). The momentum measure reads plain rapier2d's own friction exactly.
+//! axis). The momentum measure reads plain rapier's own friction exactly.
 
-mod support;
-
-use stickslip_rapier2d::ReadBack;
-use stickslip_rapier2d::core::law::Law;
-use stickslip_rapier2d::core::sliding_curve::{Curve, SlidingCurve, StribeckDecay};
-use stickslip_rapier2d::rapier::prelude::*;
-use support::Sled;
+use stickslip_core::law::Law;
+use stickslip_core::sliding_curve::{Curve, SlidingCurve, StribeckDecay};
+use stickslip_fixtures::dim::spin;
+use stickslip_fixtures::{Sled, cuboid3, v3};
+use stickslip_rapier::ReadBack;
+use stickslip_rapier::rapier::math::rotation_from_angle;
+use stickslip_rapier::rapier::prelude::*;
 
 /// Law stiffness (1/m): elastic range μ_ba/c = 50 µm.
 const C: f64 = 1e4;
@@ -36,7 +36,7 @@ fn law() -> Law {
 
 /// (μ from the sled's momentum, μ from the reports) of the sled dragged at `v` with step
 /// `dt`, averaged over 1 s after the contact has slid 25 elastic ranges (and at least 0.5 s);
-/// with `plain`, plain rapier2d friction of that coefficient instead (no reports: NaN).
+/// with `plain`, plain rapier friction of that coefficient instead (no reports: NaN).
 fn dragged(v: f64, dt: f64, plain: Option<f32>) -> (f64, f64) {
     dragged_in_order(v, dt, plain, false)
 }
@@ -50,7 +50,7 @@ fn dragged_in_order(v: f64, dt: f64, plain: Option<f32>, sled_first: bool) -> (f
     let mut m = plain
         .is_none()
         .then(|| sled.attach(law()).with_read_back(ReadBack::Contacts));
-    let press = Vector::new(0.0, -(F as f32));
+    let press = v3(0.0, -(F as f32), 0.0);
     let settle = ((25.0 * MU_BA / C / v).max(0.5) / dt).ceil() as usize;
     let measure = (1.0 / dt).round() as usize;
     let mass = sled.mass();
@@ -87,12 +87,12 @@ fn dragged_in_order(v: f64, dt: f64, plain: Option<f32>, sled_first: bool) -> (f
 }
 
 #[test]
-fn the_momentum_measure_reads_plain_rapier2d_friction() {
-    // The measurement itself, on rapier2d's own Coulomb friction: flat at its coefficient.
+fn the_momentum_measure_reads_plain_rapier_friction() {
+    // The measurement itself, on rapier's own Coulomb friction: flat at its coefficient.
     for dt in [1.0 / 60.0, 1.0 / 240.0] {
         for v in [1e-3, 0.1, 1.0] {
             let (mu, _) = dragged(v, dt, Some(0.4));
-            println!("plain rapier2d μ 0.4 at {:.0} Hz, v {v}: {mu:.4}", 1.0 / dt);
+            println!("plain rapier μ 0.4 at {:.0} Hz, v {v}: {mu:.4}", 1.0 / dt);
             assert!((mu / 0.4 - 1.0).abs() < 0.005, "v {v} dt {dt}: {mu}");
         }
     }
@@ -145,8 +145,8 @@ fn the_order_of_the_pair_changes_nothing() {
 /// scene turned: plate, sled, pressing force and drive), and from the reports.
 fn dragged_on_turned_plate(v: f64, phi: f32) -> (f64, f64) {
     let dt = 1.0 / 60.0;
-    let rot = Rotation::new(phi);
-    let (t, n) = (rot * Vector::new(1.0, 0.0), rot * Vector::new(0.0, 1.0));
+    let rot = rotation_from_angle(spin(phi));
+    let (t, n) = (rot * v3(1.0, 0.0, 0.0), rot * v3(0.0, 1.0, 0.0));
     let half = 0.1f32;
     let mass = curve().at_rest() * F * dt / (0.01 * v);
     let mut world = PhysicsWorld {
@@ -154,18 +154,20 @@ fn dragged_on_turned_plate(v: f64, phi: f32) -> (f64, f64) {
         ..PhysicsWorld::default()
     };
     world.integration_parameters.dt = dt as f32;
-    let plate = world.insert_collider(ColliderBuilder::cuboid(500.0, 0.1).rotation(phi), None);
+    let plate = world.insert_collider(cuboid3(500.0, 0.1, 50.0).0.rotation(spin(phi)), None);
     let (body, sled) = world.insert(
         RigidBodyBuilder::dynamic()
             .translation(n * (0.1 + half))
-            .rotation(phi)
+            .rotation(spin(phi))
             .lock_rotations()
             .can_sleep(false),
-        ColliderBuilder::cuboid(half, half).density(mass as f32 / (4.0 * half * half)),
+        {
+            let (cube, volume) = cuboid3(half, half, half);
+            cube.density(mass as f32 / volume)
+        },
     );
-    let mut m =
-        stickslip_rapier2d::StickSlip::new(stickslip_rapier2d::FrictionMaterial::new(law()))
-            .with_read_back(ReadBack::Contacts);
+    let mut m = stickslip_rapier::StickSlip::new(stickslip_rapier::FrictionMaterial::new(law()))
+        .with_read_back(ReadBack::Contacts);
     m.attach(&mut world.colliders, plate, None);
     m.attach(&mut world.colliders, sled, None);
     let settle = ((25.0 * MU_BA / C / v).max(0.5) / dt).ceil() as usize;
@@ -183,11 +185,11 @@ fn dragged_on_turned_plate(v: f64, phi: f32) -> (f64, f64) {
             impulse += b.mass() as f64 * (v - b.linvel().dot(t) as f64);
             let r = m.reports().unwrap()[0];
             let on_sled = if r.collider2 == sled { -1.0 } else { 1.0 };
-            let f = Vector::new(r.friction_force[0], r.friction_force[1]);
+            let f = Vector::from_array(r.friction_force);
             reported += on_sled * f.dot(t) as f64;
             normal += r.normal_force;
             // The reported normal is the plate's, up to the pair's order.
-            let rn = Vector::new(r.normal[0], r.normal[1]);
+            let rn = Vector::from_array(r.normal);
             assert!(rn.dot(n).abs() > 0.999, "normal {rn:?} vs {n:?}");
         }
     }
