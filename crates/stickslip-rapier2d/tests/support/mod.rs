@@ -6,7 +6,7 @@
 use stickslip_rapier2d::core::law::Law;
 use stickslip_rapier2d::core::sliding_curve::Curve;
 use stickslip_rapier2d::rapier::prelude::*;
-use stickslip_rapier2d::{FrictionMaterial, StickSlip};
+use stickslip_rapier2d::StickSlip;
 
 /// Standard gravity (m/s²).
 pub const G: f64 = 9.81;
