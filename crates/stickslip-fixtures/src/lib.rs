@@ -11,7 +11,6 @@
 #[path = "../../stickslip-figures/src/scenes.rs"]
 mod reference;
 
-#[cfg(not(dim2))]
 mod conveyor;
 pub mod dim;
 #[cfg(not(dim2))]
@@ -22,7 +21,6 @@ pub mod ordinary;
 mod plate;
 mod sled;
 
-#[cfg(not(dim2))]
 pub use conveyor::Conveyor;
 #[cfg(not(dim2))]
 pub use example1::example1;

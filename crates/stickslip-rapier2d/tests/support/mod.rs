@@ -3,10 +3,10 @@
 //! and stickslip steppers, materials, a user's conveyor hook.
 #![allow(dead_code)]
 
+use stickslip_rapier2d::StickSlip;
 use stickslip_rapier2d::core::law::Law;
 use stickslip_rapier2d::core::sliding_curve::Curve;
 use stickslip_rapier2d::rapier::prelude::*;
-use stickslip_rapier2d::StickSlip;
 
 /// Standard gravity (m/s²).
 pub const G: f64 = 9.81;
