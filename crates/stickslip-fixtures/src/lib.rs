@@ -15,7 +15,6 @@ mod conveyor;
 pub mod dim;
 #[cfg(not(dim2))]
 mod example1;
-#[cfg(not(dim2))]
 pub mod ordinary;
 #[cfg(not(dim2))]
 mod plate;

@@ -2,8 +2,10 @@
 //! grounds of every shape rapier has — built the same way for plain rapier and for stickslip, so
 //! a test or a benchmark runs both side by side. Every collider gets the friction coefficient
 //! `mu` (rapier's own friction, used when nothing is attached); gravity is tilted about z so a
-//! slope of tan θ runs down along +x.
+//! slope of tan θ runs down along +x. The 2D build (cfg `dim2`) has what a plane has: the
+//! cuboid ground, the pyramid and the brick wall, the dominoes.
 
+use crate::{cuboid3, v3};
 use stickslip_rapier::rapier::prelude::*;
 
 /// A world with its ground and the bodies a scene measures.
@@ -38,7 +40,7 @@ pub fn slope_world(tan_theta: f64, dt: f64) -> PhysicsWorld {
     world.integration_parameters.dt = dt as f32;
     let theta = tan_theta.atan();
     let g = 9.81f64;
-    world.gravity = Vector::new((g * theta.sin()) as f32, -(g * theta.cos()) as f32, 0.0);
+    world.gravity = v3((g * theta.sin()) as f32, -(g * theta.cos()) as f32, 0.0);
     world
 }
 
@@ -48,21 +50,24 @@ pub enum Ground {
     /// One cuboid.
     Cuboid,
     /// A triangle mesh of 1 m squares (two triangles each), `FIX_INTERNAL_EDGES`.
+    #[cfg(not(dim2))]
     TriMesh,
     /// A flat heightfield of 1 m cells, `FIX_INTERNAL_EDGES`.
+    #[cfg(not(dim2))]
     HeightField,
     /// A compound of 1 m square cuboid tiles.
+    #[cfg(not(dim2))]
     Compound,
 }
 
 impl Ground {
     /// Inserts the ground (fixed, friction `mu`) and returns its collider.
     pub fn insert(self, world: &mut PhysicsWorld, half: f32, mu: f32) -> ColliderHandle {
+        #[cfg(not(dim2))]
         let n = (2.0 * half).round().max(1.0) as usize;
         let builder = match self {
-            Ground::Cuboid => {
-                ColliderBuilder::cuboid(half, 0.5, half).translation(Vector::new(0.0, -0.5, 0.0))
-            }
+            Ground::Cuboid => cuboid3(half, 0.5, half).0.translation(v3(0.0, -0.5, 0.0)),
+            #[cfg(not(dim2))]
             Ground::TriMesh => {
                 let mut vertices = Vec::with_capacity((n + 1) * (n + 1));
                 for i in 0..=n {
@@ -86,11 +91,13 @@ impl Ground {
                 )
                 .expect("a regular grid is a valid triangle mesh")
             }
+            #[cfg(not(dim2))]
             Ground::HeightField => ColliderBuilder::heightfield_with_flags(
                 Array2::repeat(n + 1, n + 1, 0.0),
                 Vector::new(2.0 * half, 1.0, 2.0 * half),
                 HeightFieldFlags::FIX_INTERNAL_EDGES,
             ),
+            #[cfg(not(dim2))]
             Ground::Compound => {
                 let mut tiles = Vec::with_capacity(n * n);
                 for i in 0..n {
@@ -111,6 +118,7 @@ impl Ground {
 }
 
 /// A body that rolls: its cross-section is a circle of the given radius about z.
+#[cfg(not(dim2))]
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Roller {
     /// A solid ball.
@@ -123,6 +131,7 @@ pub enum Roller {
 
 /// A [`Roller`] of radius `r` (m, density 1000) at rest on a ground of `ground` shape, on a
 /// slope of `tan_theta`, all friction `mu`, stepped at `dt`. Bodies never sleep.
+#[cfg(not(dim2))]
 pub fn roller_on_slope(
     roller: Roller,
     r: f32,
@@ -159,6 +168,7 @@ pub fn roller_on_slope(
 }
 
 /// Moment of inertia over m r² about the roll axis (z in the world) of a body.
+#[cfg(not(dim2))]
 pub fn roll_inertia_ratio(world: &PhysicsWorld, body: RigidBodyHandle, r: f32) -> f64 {
     let b = &world.bodies[body];
     let props = b.mass_properties().local_mprops;
@@ -181,11 +191,13 @@ pub enum Stack {
     /// brick.
     Wall,
     /// A plank tower: `size` crossed layers of 4 planks (1.6 × 0.1 × 0.2 m).
+    #[cfg(not(dim2))]
     Tower,
     /// A tower in the layout of rapier's `keva3` example: `size` blocks (at most 3) of planks
     /// 0.1 × 0.5 × 2 m standing on edge, stacked from the widest, each block's layers crossed
     /// (planks of one direction end to end, of the other spaced) and its top closed by planks
     /// lying flat side by side. Three blocks: 444 planks, with faces that touch at zero gap.
+    #[cfg(not(dim2))]
     Keva,
 }
 
@@ -196,11 +208,13 @@ pub fn stack(kind: Stack, size: usize, tan_theta: f64, mu: f32, dt: f64) -> Ordi
     let ground = Ground::Cuboid.insert(&mut world, 20.0, mu);
     let mut bodies = Vec::new();
     let mut add = |world: &mut PhysicsWorld, at: Vector, half: Vector| {
+        #[cfg(not(dim2))]
+        let shape = ColliderBuilder::cuboid(half.x, half.y, half.z);
+        #[cfg(dim2)]
+        let shape = ColliderBuilder::cuboid(half.x, half.y);
         let (b, _) = world.insert(
             RigidBodyBuilder::dynamic().translation(at).can_sleep(false),
-            ColliderBuilder::cuboid(half.x, half.y, half.z)
-                .density(500.0)
-                .friction(mu),
+            shape.density(500.0).friction(mu),
         );
         bodies.push(b);
     };
@@ -212,21 +226,22 @@ pub fn stack(kind: Stack, size: usize, tan_theta: f64, mu: f32, dt: f64) -> Ordi
                 for i in 0..n {
                     let x = (i as f32 - (n - 1) as f32 / 2.0) * 2.0 * h;
                     let y = h + row as f32 * 2.0 * h;
-                    add(&mut world, Vector::new(x, y, 0.0), Vector::splat(h));
+                    add(&mut world, v3(x, y, 0.0), Vector::splat(h));
                 }
             }
         }
         Stack::Wall => {
-            let half = Vector::new(0.2, 0.1, 0.1);
+            let half = v3(0.2, 0.1, 0.1);
             for row in 0..size {
                 let offset = if row % 2 == 0 { 0.0 } else { half.x };
                 for i in 0..6 {
                     let x = (i as f32 - 2.5) * 2.0 * half.x + offset;
                     let y = half.y + row as f32 * 2.0 * half.y;
-                    add(&mut world, Vector::new(x, y, 0.0), half);
+                    add(&mut world, v3(x, y, 0.0), half);
                 }
             }
         }
+        #[cfg(not(dim2))]
         Stack::Tower => {
             let (long, thick, wide) = (0.8f32, 0.05f32, 0.1f32);
             for layer in 0..size {
@@ -242,6 +257,7 @@ pub fn stack(kind: Stack, size: usize, tan_theta: f64, mu: f32, dt: f64) -> Ordi
                 }
             }
         }
+        #[cfg(not(dim2))]
         Stack::Keva => {
             let half = Vector::new(0.05, 0.25, 1.0);
             let mut base = 0.0;
@@ -260,6 +276,7 @@ pub fn stack(kind: Stack, size: usize, tan_theta: f64, mu: f32, dt: f64) -> Ordi
 
 /// One block of [`Stack::Keva`] (rapier's `keva3` `build_block`), centred on the y axis with
 /// its bottom at `base`: returns the height of its top.
+#[cfg(not(dim2))]
 fn keva_block(
     world: &mut PhysicsWorld,
     add: &mut impl FnMut(&mut PhysicsWorld, Vector, Vector),
@@ -308,6 +325,7 @@ fn keva_block(
 
 /// A box (2 × 0.2 × 2 m, mass `box_mass`) on level ground, carrying `balls` balls of radius
 /// 0.1 m (mass `ball_mass` each) on its top, all friction `mu`. Body 0 is the box.
+#[cfg(not(dim2))]
 pub fn box_with_balls(
     balls: usize,
     box_mass: f32,
@@ -352,6 +370,7 @@ pub const CART_WHEEL_RADIUS: f32 = 0.2;
 /// A cart on level ground: a 1.6 × 0.2 × 0.8 m chassis of `chassis_mass` on four solid
 /// cylinder wheels (radius 0.2 m, width 0.1 m, mass `wheel_mass`) on revolute joints about z,
 /// all friction `mu`. Body 0 is the chassis, bodies 1–4 the wheels.
+#[cfg(not(dim2))]
 pub fn cart(chassis_mass: f32, wheel_mass: f32, mu: f32, dt: f64) -> OrdinaryScene {
     let mut world = slope_world(0.0, dt);
     let ground = Ground::Cuboid.insert(&mut world, 30.0, mu);
@@ -402,17 +421,12 @@ pub fn dominoes(count: usize, mu: f32, dt: f64) -> OrdinaryScene {
     let mut bodies = Vec::with_capacity(count);
     for i in 0..count {
         let mut b = RigidBodyBuilder::dynamic()
-            .translation(Vector::new(i as f32 * 0.5, 0.5, 0.0))
+            .translation(v3(i as f32 * 0.5, 0.5, 0.0))
             .can_sleep(false);
         if i == 0 {
-            b = b.angvel(Vector::new(0.0, 0.0, -1.5));
+            b = b.angvel(crate::dim::spin(-1.5));
         }
-        let (h, _) = world.insert(
-            b,
-            ColliderBuilder::cuboid(0.05, 0.5, 0.25)
-                .density(700.0)
-                .friction(mu),
-        );
+        let (h, _) = world.insert(b, cuboid3(0.05, 0.5, 0.25).0.density(700.0).friction(mu));
         bodies.push(h);
     }
     OrdinaryScene {
@@ -424,6 +438,7 @@ pub fn dominoes(count: usize, mu: f32, dt: f64) -> OrdinaryScene {
 
 /// A 0.5 m cube (density 1000) on level ground spinning about the vertical at `spin` rad/s,
 /// all friction `mu`.
+#[cfg(not(dim2))]
 pub fn spinning_box(spin: f32, mu: f32, dt: f64) -> OrdinaryScene {
     let mut world = slope_world(0.0, dt);
     let ground = Ground::Cuboid.insert(&mut world, 20.0, mu);
@@ -447,6 +462,7 @@ pub fn spinning_box(spin: f32, mu: f32, dt: f64) -> OrdinaryScene {
 /// `tan_theta`, all friction `mu`, straddling the cell edge at z = 0 (on a mesh, heightfield
 /// or compound it touches several cells from the start) near the origin (f32 positions
 /// resolve sub-micrometre creep there).
+#[cfg(not(dim2))]
 pub fn box_on_slope(ground: Ground, tan_theta: f64, mu: f32, dt: f64) -> OrdinaryScene {
     let mut world = slope_world(tan_theta, dt);
     let ground = ground.insert(&mut world, 20.0, mu);
