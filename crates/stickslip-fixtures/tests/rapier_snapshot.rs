@@ -7,13 +7,14 @@
 //! user hooks wrapped, and contacts appearing and disappearing (boxes pushed off the edge
 //! of the ground, bouncing, landing, sleeping). A modifier restarted without the saved state
 //! diverges (so the comparison can fail). Garbage, truncated and mutated snapshot bytes, and
-//! inconsistent snapshot data, give an error and never a panic.
-#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
+//! inconsistent snapshot data, give an error and never a panic. Contacts recycled while
+//! quiet resume bit for bit as well. All in 3D and in 2D (stickslip-fixtures2d).
 
 use stickslip_core::law::{Law, Physical, Regularization, Regularized};
 use stickslip_core::sliding_curve::{Curve, StribeckDecay};
 use stickslip_core::waveform::Waveform;
-use stickslip_fixtures::Conveyor;
+use stickslip_fixtures::dim::body_bits;
+use stickslip_fixtures::{Conveyor, cuboid3, v3};
 use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::snapshot::SnapshotError;
 use stickslip_rapier::{
@@ -56,37 +57,37 @@ struct Scene {
 /// edge, bounce and rest (some may sleep).
 fn scene() -> Scene {
     let mut world = PhysicsWorld::default();
-    let ground = world.insert_collider(
-        ColliderBuilder::cuboid(2.5, 0.1, 2.0).restitution(0.3),
-        None,
-    );
+    let ground = world.insert_collider(cuboid3(2.5, 0.1, 2.0).0.restitution(0.3), None);
     // Boxes that leave the ground land here (new contacts, same stickslip material).
     let floor = world.insert_collider(
-        ColliderBuilder::cuboid(50.0, 0.1, 50.0).translation(Vector::new(0.0, -3.0, 0.0)),
+        cuboid3(50.0, 0.1, 50.0).0.translation(v3(0.0, -3.0, 0.0)),
         None,
     );
-    let belt = world.insert_collider(
-        ColliderBuilder::cuboid(1.0, 0.1, 1.0).translation(Vector::new(0.0, 0.0, 4.0)),
-        None,
-    );
+    // The belt: beside the ground along z in 3D, along x in 2D.
+    #[cfg(not(dim2))]
+    let (belt_half, belt_at, belt_x0, belt_z) = (1.0, v3(0.0, 0.0, 4.0), -0.3, 4.0);
+    #[cfg(dim2)]
+    let (belt_half, belt_at, belt_x0, belt_z) = (1.5, v3(8.0, 0.0, 0.0), 7.6, 0.0);
+    let belt = world.insert_collider(cuboid3(belt_half, 0.1, 1.0).0.translation(belt_at), None);
     let mut bodies = Vec::new();
     for i in 0..8 {
         let (x, z) = if i < 6 {
             (-1.5 + 0.6 * i as f32, 0.0)
         } else {
-            (-0.3 + 0.6 * (i - 6) as f32, 4.0)
+            (belt_x0 + 0.6 * (i - 6) as f32, belt_z)
         };
+        #[cfg(not(dim2))]
+        let tilt = Vector::new(0.0, 0.3 * i as f32, 0.05 * i as f32);
+        #[cfg(dim2)]
+        let tilt = 0.05 * i as f32;
         let (b, _) = world.insert(
             RigidBodyBuilder::dynamic()
-                .translation(Vector::new(
-                    x,
-                    0.3 + 0.25 * i as f32,
-                    z + 0.1 * (i as f32).sin(),
-                ))
-                .rotation(Vector::new(0.0, 0.3 * i as f32, 0.05 * i as f32))
-                .linvel(Vector::new(0.05 * i as f32, 0.0, 0.0))
+                .translation(v3(x, 0.3 + 0.25 * i as f32, z + 0.1 * (i as f32).sin()))
+                .rotation(tilt)
+                .linvel(v3(0.05 * i as f32, 0.0, 0.0))
                 .can_sleep(i % 3 == 0),
-            ColliderBuilder::cuboid(0.15, 0.15, 0.15)
+            cuboid3(0.15, 0.15, 0.15)
+                .0
                 .density(500.0 + 100.0 * i as f32)
                 .restitution(0.2),
         );
@@ -106,7 +107,7 @@ type Modifier = StickSlip<Conveyor>;
 fn modifier(kind: Kind, mode: VibrationMode, s: &mut Scene) -> Modifier {
     let conveyor = Conveyor {
         belt: s.belt,
-        velocity: Vector::new(0.3, 0.0, 0.0),
+        velocity: v3(0.3, 0.0, 0.0),
     };
     // The user flags the belt for their hook, as they would without stickslip.
     s.world.colliders[s.belt].set_active_hooks(ActiveHooks::MODIFY_SOLVER_CONTACTS);
@@ -137,7 +138,8 @@ fn modifier(kind: Kind, mode: VibrationMode, s: &mut Scene) -> Modifier {
     let table = Waveform::from_table(&[0.0, 2.0, 0.5, 1.7, 0.2]).unwrap();
     let in_plane = VibrationSource::new(
         VibrationDirection::Tangential {
-            axis: [1.0, 0.0, 0.3],
+            // (2D: the tangent line's direction, x.)
+            axis: [1.0, 0.0, if cfg!(dim2) { 0.0 } else { 0.3 }],
         },
         Amplitude::Force(20.0),
         f * 1.3,
@@ -172,7 +174,7 @@ fn push(world: &mut PhysicsWorld, bodies: &[RigidBodyHandle], k: usize) {
         if body.is_sleeping() && i % 2 == 0 {
             continue; // some sleeping bodies stay asleep
         }
-        body.add_force(Vector::new(fx, m * lift, 0.1 * fx), true);
+        body.add_force(v3(fx, m * lift, 0.1 * fx), true);
     }
 }
 
@@ -186,14 +188,7 @@ fn state(world: &PhysicsWorld, bodies: &[RigidBodyHandle], m: &Modifier) -> Vec<
     let mut out = Vec::new();
     for b in bodies {
         let b = &world.bodies[*b];
-        let p = b.position();
-        let vals = [
-            p.translation.to_array(),
-            b.linvel().to_array(),
-            b.angvel().to_array(),
-        ];
-        out.extend(vals.iter().flatten().map(|x| x.to_bits() as u64));
-        out.extend(p.rotation.to_array().map(|x| x.to_bits() as u64));
+        out.extend(body_bits(b).into_iter().map(u64::from));
         out.push(b.is_sleeping() as u64);
     }
     out.push(m.reports().unwrap().len() as u64);
@@ -216,6 +211,7 @@ fn report_bits(r: &ContactReport) -> Vec<u64> {
         b.0 as u64,
         b.1 as u64,
         r.regime as u64,
+        r.reset as u64,
     ];
     for x in [r.point, r.normal, r.friction_force, r.slip_velocity] {
         v.extend(x.map(|x| x.to_bits() as u64));
@@ -230,6 +226,7 @@ fn totals_bits(t: &WorldTotals) -> Vec<u64> {
         t.sticking as u64,
         t.stick_slip as u64,
         t.sliding as u64,
+        t.reset as u64,
     ];
     v.extend(
         [
@@ -265,6 +262,11 @@ fn run_case(kind: Kind, mode: VibrationMode) {
     // has no Clone).
     let in_memory: StickSlipSnapshot = m.snapshot();
     let bytes = world_bytes(&s.world, &m);
+    // Through bytes: the world and the modifier together.
+    let (mut w_bytes, mut m_bytes) = WorldSnapshot::load(bytes.as_slice())
+        .unwrap()
+        .restore(*m.inner())
+        .unwrap();
     let loaded = WorldSnapshot::load(bytes.as_slice()).unwrap();
     let mut w_mem = loaded.world;
     let mut m_mem = StickSlip::restore(&in_memory, &w_mem.colliders, *m.inner()).unwrap();
@@ -312,10 +314,15 @@ fn run_case(kind: Kind, mode: VibrationMode) {
     let on_ground_at_snapshot = on_ground(&s.world);
     for k in BEFORE..BEFORE + AFTER {
         step(&mut s.world, &s.bodies, &mut m, k);
+        step(&mut w_bytes, &s.bodies, &mut m_bytes, k);
         step(&mut w_mem, &s.bodies, &mut m_mem, k);
         step(&mut w_file, &s.bodies, &mut m_file, k);
         step(&mut w_lost, &s.bodies, &mut lost, k);
         let want = state(&s.world, &s.bodies, &m);
+        assert!(
+            want == state(&w_bytes, &s.bodies, &m_bytes),
+            "{kind:?} {mode:?}: restore from bytes differs at step {k}"
+        );
         assert!(
             want == state(&w_mem, &s.bodies, &m_mem),
             "{kind:?} {mode:?}: in-memory restore differs at step {k}"
@@ -652,17 +659,119 @@ fn closure_waveforms_snapshot_in_memory_but_not_to_a_file() {
     assert!(matches!(err, SnapshotError::Encode(_)), "{err}");
 }
 
+#[test]
+fn quiet_recycled_contacts_resume_bit_identically() {
+    // Boxes resting on an attached ground with nothing driving them: stickslip turns its hook
+    // flag off on their colliders (rapier recycles their contacts). Saved in that state, the
+    // world resumes bit for bit, also when a box is pushed awake and the pushes end.
+    let build = || {
+        let mut world = PhysicsWorld::default();
+        let ground = world.insert_collider(cuboid3(20.0, 0.1, 20.0).0, None);
+        let mut bodies = Vec::new();
+        let mut colliders = vec![ground];
+        for i in 0..5 {
+            let (b, c) = world.insert(
+                RigidBodyBuilder::dynamic()
+                    .translation(v3(-4.0 + 2.0 * i as f32, 0.1 + 0.25 + 0.01, 0.0))
+                    .can_sleep(false),
+                cuboid3(0.25, 0.25, 0.25).0.density(800.0),
+            );
+            bodies.push(b);
+            colliders.push(c);
+        }
+        // A second layer on the middle box.
+        let (b, c) = world.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(v3(0.0, 0.85 + 0.02, 0.0))
+                .can_sleep(false),
+            cuboid3(0.2, 0.2, 0.2).0.density(800.0),
+        );
+        bodies.push(b);
+        colliders.push(c);
+        let mut m = StickSlip::new(FrictionMaterial::new(law(Kind::Ep)))
+            .with_read_back(stickslip_rapier::ReadBack::Contacts);
+        for h in &colliders {
+            m.attach(&mut world.colliders, *h, None);
+        }
+        (world, bodies, colliders, m)
+    };
+    let (mut world, bodies, colliders, mut m) = build();
+    for _ in 0..240 {
+        m.step(&mut world);
+    }
+    let recycled = colliders.iter().filter(|c| m.is_recycled(**c)).count();
+    println!(
+        "{recycled} of {} colliders recycled at the snapshot",
+        colliders.len()
+    );
+    assert!(recycled >= 3, "the resting scene is not quiet");
+    let bytes = {
+        let mut b = Vec::new();
+        WorldSnapshot::save_from(&world, &m, &mut b).unwrap();
+        b
+    };
+    let (mut w2, mut m2) = WorldSnapshot::load(bytes.as_slice())
+        .unwrap()
+        .restore(())
+        .unwrap();
+    for c in &colliders {
+        assert_eq!(m.is_recycled(*c), m2.is_recycled(*c));
+    }
+    let bits = |w: &PhysicsWorld, m: &StickSlip| {
+        let mut out: Vec<u64> = Vec::new();
+        for b in &bodies {
+            out.extend(body_bits(&w.bodies[*b]).into_iter().map(u64::from));
+        }
+        for r in m.reports().unwrap() {
+            out.extend(report_bits(r));
+        }
+        out
+    };
+    let mut woke = false;
+    for k in 0..600 {
+        for (w, m) in [(&mut world, &mut m), (&mut w2, &mut m2)] {
+            // A push on box 1 from 1 s to 1.5 s after the snapshot, beyond break-away.
+            let b = &mut w.bodies[bodies[1]];
+            b.reset_forces(true);
+            if (60..90).contains(&k) {
+                let f = 0.8 * b.mass() * 9.81;
+                b.add_force(v3(f, 0.0, 0.0), true);
+            }
+            m.step(w);
+        }
+        woke |= !m.is_recycled(colliders[2]);
+        assert!(
+            bits(&world, &m) == bits(&w2, &m2),
+            "the quiet world resumed differently at step {k}"
+        );
+    }
+    assert!(woke, "the pushed box's contact was never hooked again");
+    let recycled_end = colliders.iter().filter(|c| m.is_recycled(**c)).count();
+    println!("identical over 600 steps; {recycled_end} recycled at the end");
+}
+
 /// Hundreds of contacts, so that with rapier's `parallel` feature the hook runs on several
 /// threads (rapier hands pairs to its workers in blocks of 64) and new contacts take their
 /// slots in whatever order the threads reach them: the resumed run must still be identical.
 #[test]
 fn hundreds_of_contacts_resume_bit_identically() {
     const ROWS: usize = 14;
+    // A 14 × 14 grid on the ground; in 2D, the grid's rows in one row on a longer ground.
+    #[cfg(not(dim2))]
+    let (at, ground_half) = (
+        |x: f32, z: f32| v3(-3.6 + 0.55 * x, 0.26 + 0.02 * z, -3.6 + 0.55 * z),
+        4.0,
+    );
+    #[cfg(dim2)]
+    let (at, ground_half) = (
+        |x: f32, z: f32| v3(-53.9 + 0.55 * (x + ROWS as f32 * z), 0.16, 0.0),
+        55.0,
+    );
     let build = || {
         let mut world = PhysicsWorld::default();
-        let ground = world.insert_collider(ColliderBuilder::cuboid(4.0, 0.1, 4.0), None);
+        let ground = world.insert_collider(cuboid3(ground_half, 0.1, 4.0).0, None);
         let floor = world.insert_collider(
-            ColliderBuilder::cuboid(60.0, 0.1, 60.0).translation(Vector::new(0.0, -3.0, 0.0)),
+            cuboid3(60.0, 0.1, 60.0).0.translation(v3(0.0, -3.0, 0.0)),
             None,
         );
         let mut bodies = Vec::new();
@@ -670,13 +779,9 @@ fn hundreds_of_contacts_resume_bit_identically() {
             let (x, z) = ((i % ROWS) as f32, (i / ROWS) as f32);
             let (b, _) = world.insert(
                 RigidBodyBuilder::dynamic()
-                    .translation(Vector::new(
-                        -3.6 + 0.55 * x,
-                        0.26 + 0.02 * z,
-                        -3.6 + 0.55 * z,
-                    ))
+                    .translation(at(x, z))
                     .can_sleep(i % 5 == 0),
-                ColliderBuilder::cuboid(0.15, 0.15, 0.15).density(800.0),
+                cuboid3(0.15, 0.15, 0.15).0.density(800.0),
             );
             bodies.push(b);
         }
@@ -712,18 +817,13 @@ fn hundreds_of_contacts_resume_bit_identically() {
             let fx = mass * 9.81 * (out + 0.52 * phase.sin());
             let lift = if (k + 7 * i) % 250 < 10 { 14.0 } else { 0.0 };
             body.reset_forces(false);
-            body.add_force(Vector::new(fx, mass * lift, 0.3 * fx), true);
+            body.add_force(v3(fx, mass * lift, 0.3 * fx), true);
         }
     };
     let bits = |world: &PhysicsWorld, m: &StickSlip<ThreadsSeen>| {
         let mut out = Vec::new();
         for b in &bodies {
-            let b = &world.bodies[*b];
-            let p = b.position();
-            for v in [p.translation.to_array(), b.linvel().to_array()] {
-                out.extend(v.map(|x| x.to_bits() as u64));
-            }
-            out.extend(p.rotation.to_array().map(|x| x.to_bits() as u64));
+            out.extend(body_bits(&world.bodies[*b]).into_iter().map(u64::from));
         }
         for r in m.reports().unwrap() {
             out.extend(report_bits(r));
