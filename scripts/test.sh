@@ -36,9 +36,8 @@ install_rerun_cli
 # (STICKSLIP_TIMINGS=--timings writes cargo's per-crate timing report; .ci/run sets it.)
 cargo test --workspace --features "$STICKSLIP_FEATURES" ${STICKSLIP_TIMINGS:-}
 # The rapier tests that exercise the hook on several threads, once more with rapier's
-# multi-threaded `parallel` feature, 3D (crates/stickslip-fixtures/tests/, whose 2D forms
-# stickslip-fixtures2d builds) and 2D (crates/stickslip-rapier2d/tests/).
+# multi-threaded `parallel` feature, in 3D (stickslip-fixtures) and in 2D (stickslip-fixtures2d
+# builds the same files for rapier2d).
 cargo test --workspace --exclude stickslip-fixtures-035 --features "$STICKSLIP_PARALLEL_FEATURES" \
     --test rapier_many_contacts --test rapier_popov --test rapier_snapshot --test rapier_drive \
-    --test shared_world --test rapier_recycling --test rapier_load_jump \
-    --test rapier2d_shared_world
+    --test shared_world --test rapier_recycling --test rapier_load_jump

@@ -29,3 +29,15 @@ pub fn spin(w: f32) -> AngVector {
     let s = Vector::new(0.0, 0.0, w);
     s
 }
+
+/// A cuboid shape from its 3D half-extents (2D: z dropped).
+pub fn cuboid_shape(hx: f32, hy: f32, hz: f32) -> SharedShape {
+    #[cfg(dim2)]
+    let s = {
+        let _ = hz;
+        SharedShape::cuboid(hx, hy)
+    };
+    #[cfg(not(dim2))]
+    let s = SharedShape::cuboid(hx, hy, hz);
+    s
+}

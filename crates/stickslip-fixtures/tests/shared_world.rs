@@ -14,13 +14,19 @@
 //! Composite shapes keep one record per manifold. The silent cases speak: reports and totals
 //! are an error when read-back is off, a hook call without `begin_step`, a non-Simplified
 //! friction model and a step dt out of range (not a pause, dt = 0) log a warning once.
-#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
+//! A one-way platform (rapier's `update_as_oneway_platform`, which keeps its state in the
+//! manifold's `user_data`) that stickslip also owns lets a box through from below bit for bit
+//! as the user's hook alone, and once the box has landed on top the law holds it (μ 0.5 >
+//! tan θ 0.3) where the platform's rapier friction 0.1 lets it slide. All in 3D and in 2D
+//! (stickslip-fixtures2d).
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Mutex, OnceLock};
 use std::time::Duration;
 use stickslip_core::law::{FrictionLaw, Law};
 use stickslip_core::sliding_curve::Curve;
+use stickslip_fixtures::dim::cuboid_shape;
+use stickslip_fixtures::{cuboid3, v3};
 use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, NotReadBack, ReadBack, StickSlip};
 
@@ -35,7 +41,7 @@ fn ep(mu_ba: f64, mu_k: f64) -> Law {
 fn tilted_world(tan_theta: f64) -> PhysicsWorld {
     let mut world = PhysicsWorld::default();
     let th = tan_theta.atan();
-    world.gravity = Vector::new((G * th.sin()) as f32, -(G * th.cos()) as f32, 0.0);
+    world.gravity = v3((G * th.sin()) as f32, -(G * th.cos()) as f32, 0.0);
     world.integration_parameters.dt = DT;
     world
 }
@@ -43,16 +49,18 @@ fn tilted_world(tan_theta: f64) -> PhysicsWorld {
 fn cube(at: Vector) -> (RigidBodyBuilder, ColliderBuilder) {
     (
         RigidBodyBuilder::dynamic().translation(at).can_sleep(false),
-        ColliderBuilder::cuboid(0.1, 0.1, 0.1).density(1000.0),
+        cuboid3(0.1, 0.1, 0.1).0.density(1000.0),
     )
 }
 
 /// The user's own hooks: a pad their hook makes slippery (friction 0.05) and a belt whose
-/// surface moves at 0.5 m/s along +z.
+/// surface moves at 0.5 m/s up the slope (−x).
 struct UserHooks {
     pad: ColliderHandle,
     belt: ColliderHandle,
 }
+
+const BELT_SPEED: f32 = -0.5;
 
 impl PhysicsHooks for UserHooks {
     fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
@@ -68,9 +76,13 @@ impl PhysicsHooks for UserHooks {
             *friction = 0.05;
         }
         if c1 == self.belt || c2 == self.belt {
-            let v = if c1 == self.belt { 0.5 } else { -0.5 };
+            let v = if c1 == self.belt {
+                BELT_SPEED
+            } else {
+                -BELT_SPEED
+            };
             for c in contacts.iter_mut() {
-                c.tangent_velocity = Vector::new(0.0, 0.0, v);
+                c.tangent_velocity = v3(v, 0.0, 0.0);
             }
         }
     }
@@ -82,48 +94,47 @@ fn pairs_stickslip_does_not_own_are_the_users_bit_for_bit() {
     let build = || {
         let mut world = tilted_world(tan_theta);
         let flag = ActiveHooks::MODIFY_SOLVER_CONTACTS;
-        let ground = world.insert_collider(
-            ColliderBuilder::cuboid(2.0, 0.1, 2.0).translation(Vector::new(-20.0, -0.1, 0.0)),
-            None,
-        );
-        let pad = world.insert_collider(
-            ColliderBuilder::cuboid(20.0, 0.1, 2.0)
-                .translation(Vector::new(0.0, -0.1, 10.0))
-                .active_hooks(flag),
-            None,
-        );
-        let belt = world.insert_collider(
-            ColliderBuilder::cuboid(2.0, 0.1, 20.0)
-                .translation(Vector::new(20.0, -0.1, 0.0))
-                .active_hooks(flag),
-            None,
-        );
-        let (b, c) = cube(Vector::new(-20.0, 0.1, 0.0));
-        let (held, held_c) = world.insert(b, c);
-        let (b, c) = cube(Vector::new(0.0, 0.1, 10.0));
-        let (on_pad, _) = world.insert(b, c);
-        let (b, c) = cube(Vector::new(20.0, 0.1, 0.0));
-        let (on_belt, _) = world.insert(b, c);
+        let slab = |x: f32| cuboid3(8.0, 0.1, 2.0).0.translation(v3(x, -0.1, 0.0));
+        let ground = world.insert_collider(slab(-60.0), None);
+        let pad = world.insert_collider(slab(-20.0).active_hooks(flag), None);
+        let belt = world.insert_collider(slab(20.0).active_hooks(flag), None);
+        // Neither hooked nor attached: rapier's own friction (0.5 by default).
+        let plain = world.insert_collider(slab(60.0), None);
+        let mut boxes = Vec::new();
+        let mut colliders = Vec::new();
+        for x in [-60.0, -20.0, 20.0, 60.0] {
+            let (b, c) = cube(v3(x, 0.1, 0.0));
+            let (b, c) = world.insert(b, c);
+            boxes.push(b);
+            colliders.push(c);
+        }
+        let _ = plain;
         (
             world,
-            [ground, held_c],
+            [ground, colliders[0]],
             UserHooks { pad, belt },
-            [held, on_pad, on_belt],
+            boxes,
         )
     };
     let steps = 120;
+    let record = |world: &PhysicsWorld, boxes: &[RigidBodyHandle]| -> Vec<(Vector, Vector)> {
+        boxes[1..]
+            .iter()
+            .map(|b| {
+                let rb = &world.bodies[*b];
+                (rb.translation(), rb.linvel())
+            })
+            .collect()
+    };
     // The user's hooks alone.
-    let (mut world, _, hooks, [_, pad_box, belt_box]) = build();
+    let (mut world, _, hooks, boxes) = build();
     let mut alone = Vec::new();
     for _ in 0..steps {
         world.step_with_events(&hooks, &());
-        alone.push([pad_box, belt_box].map(|b| {
-            let rb = &world.bodies[b];
-            (rb.translation(), rb.linvel())
-        }));
+        alone.push(record(&world, &boxes));
     }
     // The same hooks wrapped in stickslip, with only the far ground and its box attached.
-    let (mut world, attached, hooks, [held, pad_box, belt_box]) = build();
+    let (mut world, attached, hooks, boxes) = build();
     let mut m = StickSlip::with_hooks(FrictionMaterial::new(ep(0.5, 0.5)), hooks);
     for h in attached {
         m.attach(&mut world.colliders, h, None);
@@ -132,30 +143,29 @@ fn pairs_stickslip_does_not_own_are_the_users_bit_for_bit() {
     for (k, want) in alone.iter().enumerate() {
         m.step(&mut world);
         if k == 10 {
-            // The contact has formed (rapier's own settling slip is behind).
-            x0 = world.bodies[held].translation().x;
+            // The contact has formed.
+            x0 = world.bodies[boxes[0]].translation().x;
         }
-        let got = [pad_box, belt_box].map(|b| {
-            let rb = &world.bodies[b];
-            (rb.translation(), rb.linvel())
-        });
-        assert_eq!(&got, want, "step {k}: the user's pairs changed");
+        assert_eq!(
+            &record(&world, &boxes),
+            want,
+            "step {k}: the user's pairs changed"
+        );
     }
-    // And the physics: the pad slides at g (sin θ − 0.05 cos θ) from rest, the belt carries
-    // its box at 0.5 m/s across the slope, stickslip holds its box (μ 0.5 > tan θ 0.3).
+    // The physics: the pad slides at g (sin θ − 0.05 cos θ) from rest, the belt carries its
+    // box at its speed, rapier's own friction 0.5 holds the unhooked box, and stickslip
+    // holds its box (μ 0.5 > tan θ 0.3) within its elastic range g_ba = 50 µm.
     let t = steps as f64 * DT as f64;
     let th = tan_theta.atan();
     let a = G * (th.sin() - 0.05 * th.cos());
-    let v_pad = world.bodies[pad_box].linvel().x as f64;
-    assert!(
-        (v_pad - a * t).abs() < 0.03 * a * t,
-        "pad {v_pad} vs {}",
-        a * t
-    );
-    let v_belt = world.bodies[belt_box].linvel().z as f64;
-    assert!((v_belt.abs() - 0.5).abs() < 0.01, "belt {v_belt}");
-    let held_dx = (world.bodies[held].translation().x - x0).abs();
-    // Below g_ba = μ/c = 50 µm.
+    let v_pad = world.bodies[boxes[1]].linvel().x as f64;
+    println!("pad: v {v_pad:.4} m/s vs {:.4}", a * t);
+    assert!((v_pad / (a * t) - 1.0).abs() < 0.03, "pad {v_pad}");
+    let v_belt = world.bodies[boxes[2]].linvel().x;
+    println!("belt: v {v_belt:.4} m/s vs {BELT_SPEED}");
+    assert!((v_belt - BELT_SPEED).abs() < 1e-3, "belt {v_belt}");
+    let held_dx = (world.bodies[boxes[0]].translation().x - x0).abs();
+    println!("stickslip's box: crept {held_dx:.2e} m");
     assert!(held_dx < 5e-5, "stickslip's box crept {held_dx} m");
     assert_eq!(
         m.active_contacts(),
@@ -187,14 +197,13 @@ fn the_users_hook_sees_the_pairs_it_sees_without_stickslip() {
     let build = || {
         let mut world = tilted_world(0.3);
         let flag = ActiveHooks::MODIFY_SOLVER_CONTACTS;
-        let ground =
-            |x: f32| ColliderBuilder::cuboid(2.0, 0.1, 2.0).translation(Vector::new(x, -0.1, 0.0));
+        let ground = |x: f32| cuboid3(2.0, 0.1, 2.0).0.translation(v3(x, -0.1, 0.0));
         let stickslips = world.insert_collider(ground(-10.0), None);
         let users = world.insert_collider(ground(0.0).active_hooks(flag), None);
         let both = world.insert_collider(ground(10.0).active_hooks(flag), None);
         let mut boxes = Vec::new();
         for x in [-10.0, 0.0, 10.0] {
-            let (b, c) = cube(Vector::new(x, 0.1, 0.0));
+            let (b, c) = cube(v3(x, 0.1, 0.0));
             boxes.push(world.insert(b, c).1);
         }
         (world, [stickslips, users, both], boxes)
@@ -245,6 +254,101 @@ fn the_users_hook_sees_the_pairs_it_sees_without_stickslip() {
     assert!(flagged(both) && flagged(users));
 }
 
+/// The user's one-way platform: contacts are kept only while the platform's normal (from
+/// the platform) points up.
+struct OneWay {
+    platform: ColliderHandle,
+}
+
+impl PhysicsHooks for OneWay {
+    fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
+        let allowed = if ctx.collider1 == self.platform {
+            Vector::Y
+        } else if ctx.collider2 == self.platform {
+            -Vector::Y
+        } else {
+            return;
+        };
+        ctx.update_as_oneway_platform(allowed, 0.1);
+    }
+}
+
+#[test]
+fn a_one_way_platform_stickslip_also_owns_lets_boxes_through_and_the_law_holds_them() {
+    let tan_theta = 0.3;
+    const TOP: f32 = 2.1;
+    let build = || {
+        let mut world = tilted_world(tan_theta);
+        let platform = world.insert_collider(
+            cuboid3(8.0, 0.1, 2.0)
+                .0
+                .translation(v3(0.0, 2.0, 0.0))
+                .friction(0.1)
+                .active_hooks(ActiveHooks::MODIFY_SOLVER_CONTACTS),
+            None,
+        );
+        // Thrown up from below the platform, through it, to land on top.
+        let (b, c) = world.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(v3(-3.0, 1.0, 0.0))
+                .linvel(v3(0.0, 6.5, 0.0))
+                .lock_rotations()
+                .can_sleep(false),
+            cuboid3(0.1, 0.1, 0.1).0.density(1000.0).friction(0.1),
+        );
+        (world, platform, b, c)
+    };
+    let steps = 180;
+    let (mut world, platform, b, _) = build();
+    let hook = OneWay { platform };
+    let mut alone = Vec::new();
+    for _ in 0..steps {
+        world.step_with_events(&hook, &());
+        let rb = &world.bodies[b];
+        alone.push((rb.translation(), rb.linvel()));
+    }
+    let (mut world, platform, b, c) = build();
+    let mut m = StickSlip::with_hooks(FrictionMaterial::new(ep(0.5, 0.5)), OneWay { platform });
+    m.attach(&mut world.colliders, platform, None);
+    m.attach(&mut world.colliders, c, None);
+    let mut with = Vec::new();
+    for _ in 0..steps {
+        m.step(&mut world);
+        let rb = &world.bodies[b];
+        with.push((rb.translation(), rb.linvel()));
+    }
+    // Through the platform both ways alike: the first step that differs has the box on top.
+    let first = (0..steps).find(|k| alone[*k] != with[*k]).unwrap_or(steps);
+    let went_above = alone.iter().position(|(p, _)| p.y > TOP + 0.1).unwrap();
+    println!(
+        "above the platform from step {went_above}; trajectories identical up to step {first} \
+         (y {:.4})",
+        with.get(first).map_or(f32::NAN, |s| s.0.y)
+    );
+    assert!(
+        first > went_above,
+        "stickslip changed the pass through the platform"
+    );
+    assert!(
+        with[first].0.y > TOP + 0.1 - 0.01,
+        "the first difference is not on top of the platform: {:?}",
+        with[first]
+    );
+    // On top: the law holds (μ 0.5 > tan θ 0.3) where the platform's friction 0.1 lets the box
+    // slide under the user's hook alone.
+    let rest = &with[steps - 61..];
+    let crept = rest[60].0.x - rest[0].0.x;
+    let slid = alone[steps - 1].0.x - alone[steps - 61].0.x;
+    println!("last second on top: stickslip crept {crept:.2e} m, the hook alone slid {slid:.3} m");
+    assert!(rest.iter().all(|s| s.0.y > TOP), "the box fell through");
+    assert!(
+        crept.abs() < 5e-5,
+        "the law did not hold the box: {crept} m"
+    );
+    assert!(slid > 0.5, "the platform's rapier friction held the box");
+    assert_eq!(m.active_contacts(), 1);
+}
+
 /// One side of the incline pair.
 #[derive(Clone)]
 enum Side {
@@ -274,8 +378,8 @@ fn run_incline(s: &Incline, plain: bool) -> (Vec<Vector>, Option<Law>) {
         Side::Plain(mu, rule) => b.friction(*mu).friction_combine_rule(*rule),
     };
     let ground_builder =
-        collider(&s.ground, ColliderBuilder::cuboid(5.0, 0.1, 5.0)).translation(Vector::Y * -0.1);
-    let (body, cube_builder) = cube(Vector::new(0.0, 0.1, 0.0));
+        collider(&s.ground, cuboid3(5.0, 0.1, 5.0).0).translation(Vector::Y * -0.1);
+    let (body, cube_builder) = cube(v3(0.0, 0.1, 0.0));
     let cube_builder = collider(&s.cube, cube_builder);
     let (ground, (b, c)) = if s.cube_first {
         let bc = world.insert(body, cube_builder);
@@ -336,10 +440,15 @@ fn assert_order_free(s: &Incline, what: &str) {
     assert_eq!(law_a, law_b, "{what}: the law depends on the order");
     let (pa, _) = run_incline(s, true);
     let (pb, _) = run_incline(&flipped, true);
+    // Across the slope: |z| in 3D (the sideways settling mirrors), y in 2D.
+    #[cfg(not(dim2))]
+    let across = |p: &Vector| p.z.abs();
+    #[cfg(dim2)]
+    let across = |p: &Vector| p.y;
     let gap = |u: &[Vector], v: &[Vector]| {
         u.iter()
             .zip(v)
-            .map(|(p, q)| ((p.x - q.x).abs(), (p.z.abs() - q.z.abs()).abs()))
+            .map(|(p, q)| ((p.x - q.x).abs(), (across(p) - across(q)).abs()))
             .fold((0.0f32, 0.0f32), |m, d| (m.0.max(d.0), m.1.max(d.1)))
     };
     let (ours, rapiers) = (gap(&a, &b), gap(&pa, &pb));
@@ -456,7 +565,8 @@ impl PhysicsHooks for Panicky {
 fn a_panicking_wrapped_hook_leaves_no_lock_held() {
     let mut world = tilted_world(0.2);
     let ground = world.insert_collider(
-        ColliderBuilder::cuboid(20.0, 0.1, 20.0)
+        cuboid3(20.0, 0.1, 20.0)
+            .0
             .translation(Vector::Y * -0.1)
             .active_hooks(ActiveHooks::MODIFY_SOLVER_CONTACTS),
         None,
@@ -468,7 +578,12 @@ fn a_panicking_wrapped_hook_leaves_no_lock_held() {
     m.attach(&mut world.colliders, ground, None);
     let mut boxes = Vec::new();
     for i in 0..20 {
-        let (b, c) = cube(Vector::new((i % 5) as f32 - 2.0, 0.1, (i / 5) as f32 - 2.0));
+        // A 5 × 4 grid; in 2D, a row.
+        #[cfg(not(dim2))]
+        let at = v3((i % 5) as f32 - 2.0, 0.1, (i / 5) as f32 - 2.0);
+        #[cfg(dim2)]
+        let at = v3(i as f32 - 10.0, 0.1, 0.0);
+        let (b, c) = cube(at);
         let (b, c) = world.insert(b, c);
         m.attach(&mut world.colliders, c, None);
         boxes.push(b);
@@ -523,8 +638,8 @@ fn composite_shapes_keep_one_record_per_manifold() {
     let ground_tiles: Vec<(Pose, SharedShape)> = (0..6)
         .map(|i| {
             (
-                Pose::from_translation(Vector::new(i as f32, 0.0, 0.0)),
-                SharedShape::cuboid(0.5, 0.1, 0.5),
+                Pose::from_translation(v3(i as f32, 0.0, 0.0)),
+                cuboid_shape(0.5, 0.1, 0.5),
             )
         })
         .collect();
@@ -532,14 +647,14 @@ fn composite_shapes_keep_one_record_per_manifold() {
     let top_tiles: Vec<(Pose, SharedShape)> = (0..3)
         .map(|j| {
             (
-                Pose::from_translation(Vector::new(1.0 + 2.0 * j as f32, 0.0, 0.0)),
-                SharedShape::cuboid(0.99, 0.1, 0.4),
+                Pose::from_translation(v3(1.0 + 2.0 * j as f32, 0.0, 0.0)),
+                cuboid_shape(0.99, 0.1, 0.4),
             )
         })
         .collect();
     let (top, top_c) = world.insert(
         RigidBodyBuilder::dynamic()
-            .translation(Vector::new(0.0, 0.2, 0.0))
+            .translation(v3(0.0, 0.2, 0.0))
             .can_sleep(false),
         ColliderBuilder::compound(top_tiles).density(500.0),
     );
@@ -619,8 +734,8 @@ fn count(needle: &str) -> usize {
 #[test]
 fn read_back_off_is_an_error_not_an_empty_world() {
     let mut world = tilted_world(0.0);
-    let ground = world.insert_collider(ColliderBuilder::cuboid(5.0, 0.1, 5.0), None);
-    let (b, c) = cube(Vector::new(0.0, 0.2, 0.0));
+    let ground = world.insert_collider(cuboid3(5.0, 0.1, 5.0).0, None);
+    let (b, c) = cube(v3(0.0, 0.2, 0.0));
     world.insert(b, c);
     let mut m = StickSlip::new(FrictionMaterial::new(ep(0.5, 0.5)));
     m.attach(&mut world.colliders, ground, None);
@@ -657,12 +772,13 @@ fn a_hook_call_without_begin_step_warns_once_and_is_plain_rapier() {
     let build = || {
         let mut world = tilted_world(0.3);
         let ground = world.insert_collider(
-            ColliderBuilder::cuboid(5.0, 0.1, 5.0)
+            cuboid3(5.0, 0.1, 5.0)
+                .0
                 .translation(Vector::Y * -0.1)
                 .friction(0.2),
             None,
         );
-        let (b, c) = cube(Vector::new(0.0, 0.1, 0.0));
+        let (b, c) = cube(v3(0.0, 0.1, 0.0));
         let (b, _) = world.insert(b, c.friction(0.2));
         (world, ground, b)
     };
@@ -690,12 +806,14 @@ fn a_hook_call_without_begin_step_warns_once_and_is_plain_rapier() {
     assert!(world.bodies[b].translation().x > 0.05);
 }
 
+// (rapier2d has one friction model.)
+#[cfg(not(dim2))]
 #[test]
 fn an_unsupported_friction_model_warns_once() {
     let mut world = tilted_world(0.0);
     world.integration_parameters.friction_model = FrictionModel::Coulomb;
-    let ground = world.insert_collider(ColliderBuilder::cuboid(5.0, 0.1, 5.0), None);
-    let (b, c) = cube(Vector::new(0.0, 0.2, 0.0));
+    let ground = world.insert_collider(cuboid3(5.0, 0.1, 5.0).0, None);
+    let (b, c) = cube(v3(0.0, 0.2, 0.0));
     world.insert(b, c);
     let before = count("needs FrictionModel::Simplified");
     let mut m = StickSlip::new(FrictionMaterial::new(ep(0.5, 0.5)));
@@ -709,8 +827,8 @@ fn an_unsupported_friction_model_warns_once() {
 #[test]
 fn a_step_dt_out_of_range_warns_once_and_a_pause_does_not() {
     let mut world = tilted_world(0.0);
-    let ground = world.insert_collider(ColliderBuilder::cuboid(5.0, 0.1, 5.0), None);
-    let (b, c) = cube(Vector::new(0.0, 0.2, 0.0));
+    let ground = world.insert_collider(cuboid3(5.0, 0.1, 5.0).0, None);
+    let (b, c) = cube(v3(0.0, 0.2, 0.0));
     world.insert(b, c);
     let needle = "stickslip leaves such steps to rapier's friction";
     let before = count(needle);
