@@ -41,3 +41,12 @@ pub fn cuboid_shape(hx: f32, hy: f32, hz: f32) -> SharedShape {
     let s = SharedShape::cuboid(hx, hy, hz);
     s
 }
+
+/// A body's angular velocity about z, the 2D plane's normal (rad/s).
+pub fn spin_z(b: &RigidBody) -> f32 {
+    #[cfg(dim2)]
+    let w = b.angvel();
+    #[cfg(not(dim2))]
+    let w = b.angvel().z;
+    w
+}

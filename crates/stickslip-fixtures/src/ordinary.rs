@@ -117,21 +117,22 @@ impl Ground {
     }
 }
 
-/// A body that rolls: its cross-section is a circle of the given radius about z.
-#[cfg(not(dim2))]
+/// A body that rolls: its cross-section is a circle of the given radius about z (in 2D:
+/// the ball, a disc).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Roller {
     /// A solid ball.
     Ball,
     /// A solid cylinder lying on its side (axis along z, length 2 r).
+    #[cfg(not(dim2))]
     Cylinder,
     /// A capsule lying on its side (axis along z, cylinder part 2 r long).
+    #[cfg(not(dim2))]
     Capsule,
 }
 
 /// A [`Roller`] of radius `r` (m, density 1000) at rest on a ground of `ground` shape, on a
 /// slope of `tan_theta`, all friction `mu`, stepped at `dt`. Bodies never sleep.
-#[cfg(not(dim2))]
 pub fn roller_on_slope(
     roller: Roller,
     r: f32,
@@ -142,20 +143,22 @@ pub fn roller_on_slope(
 ) -> OrdinaryScene {
     let mut world = slope_world(tan_theta, dt);
     let ground = ground.insert(&mut world, 20.0, mu);
-    let rot = Vector::ZERO;
+    let rot = AngVector::default();
     let (shape, rotation) = match roller {
         Roller::Ball => (ColliderBuilder::ball(r), rot),
         // rapier's cylinder and capsule builders run along y: a quarter turn about x lays
         // them along z.
+        #[cfg(not(dim2))]
         Roller::Cylinder => (
             ColliderBuilder::cylinder(r, r),
             Vector::new(std::f32::consts::FRAC_PI_2, 0.0, 0.0),
         ),
+        #[cfg(not(dim2))]
         Roller::Capsule => (ColliderBuilder::capsule_z(r, r), rot),
     };
     let body = world.insert_body(
         RigidBodyBuilder::dynamic()
-            .translation(Vector::new(-15.0, r, 0.0))
+            .translation(v3(-15.0, r, 0.0))
             .rotation(rotation)
             .can_sleep(false),
     );
@@ -168,17 +171,22 @@ pub fn roller_on_slope(
 }
 
 /// Moment of inertia over m r² about the roll axis (z in the world) of a body.
-#[cfg(not(dim2))]
 pub fn roll_inertia_ratio(world: &PhysicsWorld, body: RigidBodyHandle, r: f32) -> f64 {
     let b = &world.bodies[body];
     let props = b.mass_properties().local_mprops;
+    // In 2D the principal inertia is about z.
+    #[cfg(dim2)]
+    let izz = props.principal_inertia();
     // The world's z axis in the body's frame, then I_zz = zᵀ I z.
-    let z = b.rotation().inverse() * Vector::Z;
-    let principal = props.principal_inertia_local_frame.inverse() * z;
-    let i = props.principal_inertia();
-    let izz = i.x * principal.x * principal.x
-        + i.y * principal.y * principal.y
-        + i.z * principal.z * principal.z;
+    #[cfg(not(dim2))]
+    let izz = {
+        let z = b.rotation().inverse() * Vector::Z;
+        let principal = props.principal_inertia_local_frame.inverse() * z;
+        let i = props.principal_inertia();
+        i.x * principal.x * principal.x
+            + i.y * principal.y * principal.y
+            + i.z * principal.z * principal.z
+    };
     izz as f64 / (b.mass() as f64 * (r as f64).powi(2))
 }
 
