@@ -5,7 +5,8 @@ use super::tangent::World;
 use crate::law::Regime;
 
 /// Regime code of a contact whose inputs were not usable in its last step (see
-/// [`super::step_contact`]).
+/// [`super::step_contact`]); adapters' business (readers get `ContactReport::reset`).
+#[doc(hidden)]
 pub const REGIME_RESET: u8 = 254;
 /// Regime code of a contact the law has not run on yet.
 #[doc(hidden)]
