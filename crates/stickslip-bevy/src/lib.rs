@@ -19,6 +19,7 @@
 mod components;
 #[cfg(feature = "debug")]
 pub mod debug;
+pub mod prelude;
 mod read_back;
 #[cfg(feature = "window")]
 pub mod window;

@@ -18,6 +18,7 @@ pub mod error;
 pub mod figures;
 pub mod font;
 pub mod plot;
+pub mod prelude;
 // The rapier worlds the figures are drawn from; stickslip-fixtures (unpublished) compiles this
 // file too, for the tests. Not everything here is read by the figures.
 #[allow(dead_code)]

@@ -470,17 +470,14 @@ pub fn spinning_box(spin: f32, mu: f32, dt: f64) -> OrdinaryScene {
 /// `tan_theta`, all friction `mu`, straddling the cell edge at z = 0 (on a mesh, heightfield
 /// or compound it touches several cells from the start) near the origin (f32 positions
 /// resolve sub-micrometre creep there).
-#[cfg(not(dim2))]
 pub fn box_on_slope(ground: Ground, tan_theta: f64, mu: f32, dt: f64) -> OrdinaryScene {
     let mut world = slope_world(tan_theta, dt);
     let ground = ground.insert(&mut world, 20.0, mu);
     let (b, _) = world.insert(
         RigidBodyBuilder::dynamic()
-            .translation(Vector::new(-0.3, 0.25, 0.0))
+            .translation(v3(-0.3, 0.25, 0.0))
             .can_sleep(false),
-        ColliderBuilder::cuboid(0.25, 0.25, 0.25)
-            .density(1000.0)
-            .friction(mu),
+        cuboid3(0.25, 0.25, 0.25).0.density(1000.0).friction(mu),
     );
     OrdinaryScene {
         world,

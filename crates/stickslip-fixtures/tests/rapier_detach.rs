@@ -2,27 +2,25 @@
 //! record or report involving the collider remains, its hook flag is off again, and the world
 //! continues bit for bit as a plain rapier world (no hooks) started from the same state would,
 //! with the pair's friction back to rapier's own combined coefficient.
-#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
+//! In 3D and in 2D (stickslip-fixtures2d).
 
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
+use stickslip_fixtures::{cuboid3, v3};
 use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, StickSlip};
 
 /// Two boxes resting and being pushed on a ground: one pair to detach, one to keep.
 fn world() -> (PhysicsWorld, ColliderHandle, [RigidBodyHandle; 2]) {
     let mut world = PhysicsWorld::default();
-    let ground =
-        world.insert_collider(ColliderBuilder::cuboid(20.0, 0.1, 20.0).friction(0.4), None);
+    let ground = world.insert_collider(cuboid3(20.0, 0.1, 20.0).0.friction(0.4), None);
     let mut boxes = [RigidBodyHandle::invalid(); 2];
     for (i, b) in boxes.iter_mut().enumerate() {
         let (h, _) = world.insert(
             RigidBodyBuilder::dynamic()
-                .translation(Vector::new(2.0 * i as f32, 0.3, 0.0))
+                .translation(v3(2.0 * i as f32, 0.3, 0.0))
                 .can_sleep(false),
-            ColliderBuilder::cuboid(0.2, 0.2, 0.2)
-                .density(1000.0)
-                .friction(0.4),
+            cuboid3(0.2, 0.2, 0.2).0.density(1000.0).friction(0.4),
         );
         *b = h;
     }
@@ -30,12 +28,13 @@ fn world() -> (PhysicsWorld, ColliderHandle, [RigidBodyHandle; 2]) {
 }
 
 fn push(world: &mut PhysicsWorld, boxes: &[RigidBodyHandle; 2], k: usize) {
-    // A force that would slide the boxes with plain friction and hold them with a stronger law.
-    let f = 200.0 * (1.0 + (k as f32 * 0.05).sin());
+    // A force that would slide the boxes with plain friction and hold them with a stronger law:
+    // up to 0.64 of the weight (200 N on the 64 kg cube, scaled to the 2D box's mass).
     for b in boxes {
         let body = &mut world.bodies[*b];
+        let f = 200.0 * (body.mass() / 64.0) * (1.0 + (k as f32 * 0.05).sin());
         body.reset_forces(true);
-        body.add_force(Vector::new(f, 0.0, 0.0), true);
+        body.add_force(v3(f, 0.0, 0.0), true);
     }
 }
 

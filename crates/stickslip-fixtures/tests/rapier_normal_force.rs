@@ -4,10 +4,11 @@
 //! box resting on the ground reports its weight m g within 0.5 % (masses 1–100 kg, 60 and
 //! 240 Hz); a box pressed by an extra downward force oscillating at 2 Hz between 0 and m g
 //! reports, step by step, its weight plus the force within 2 % of m g.
-#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
+//! In 3D and in 2D (stickslip-fixtures2d).
 
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
+use stickslip_fixtures::{cuboid3, v3};
 use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, ReadBack, StickSlip};
 
@@ -17,15 +18,13 @@ const G: f64 = 9.81;
 fn scene(mass: f32, dt: f32) -> (PhysicsWorld, RigidBodyHandle, StickSlip) {
     let mut world = PhysicsWorld::default();
     world.integration_parameters.dt = dt;
-    let ground = world.insert_collider(
-        ColliderBuilder::cuboid(5.0, 0.1, 5.0).translation(Vector::Y * -0.1),
-        None,
-    );
+    let ground =
+        world.insert_collider(cuboid3(5.0, 0.1, 5.0).0.translation(Vector::Y * -0.1), None);
     let (b, c) = world.insert(
         RigidBodyBuilder::dynamic()
-            .translation(Vector::new(0.0, 0.1, 0.0))
+            .translation(v3(0.0, 0.1, 0.0))
             .can_sleep(false),
-        ColliderBuilder::cuboid(0.1, 0.1, 0.1).mass(mass),
+        cuboid3(0.1, 0.1, 0.1).0.mass(mass),
     );
     let law = Law::elasto_plastic(1e5, 0.5, 0.5, Curve::constant(0.5).unwrap()).unwrap();
     let mut m = StickSlip::new(FrictionMaterial::new(law)).with_read_back(ReadBack::Contacts);
@@ -69,7 +68,7 @@ fn an_oscillating_load_is_read_step_by_step() {
         let extra = 0.5 * w * (1.0 - (2.0 * std::f64::consts::PI * 2.0 * t).cos());
         let body = &mut world.bodies[b];
         body.reset_forces(true);
-        body.add_force(Vector::new(0.0, -(extra as f32), 0.0), true);
+        body.add_force(v3(0.0, -(extra as f32), 0.0), true);
         m.step(&mut world);
         worst = worst.max((normal_force(&m) - (w + extra)).abs());
     }

@@ -6,10 +6,11 @@
 //! break-away slip g_ba = μ_ba/c); a contact whose box is lifted away loses its state within
 //! one sweep interval; the count of states equals the count of manifolds rapier holds with
 //! solver contacts.
-#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
+//! In 3D and in 2D (stickslip-fixtures2d).
 
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
+use stickslip_fixtures::{cuboid3, v3};
 use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, SWEEP_INTERVAL, StickSlip};
 
@@ -31,13 +32,13 @@ fn sleeping_contacts_keep_their_state_and_vanished_ones_lose_it() {
     let mut world = PhysicsWorld::default();
     // Gravity along a 20° slope (tan 20° = 0.36 < μ_ba = 0.5): the box holds.
     let tilt = 20f32.to_radians();
-    world.gravity = Vector::new(9.81 * tilt.sin(), -9.81 * tilt.cos(), 0.0);
-    let ground = world.insert_collider(ColliderBuilder::cuboid(20.0, 0.1, 20.0), None);
+    world.gravity = v3(9.81 * tilt.sin(), -9.81 * tilt.cos(), 0.0);
+    let ground = world.insert_collider(cuboid3(20.0, 0.1, 20.0).0, None);
     let mut boxes = Vec::new();
     for i in 0..2 {
         let (b, _) = world.insert(
-            RigidBodyBuilder::dynamic().translation(Vector::new(3.0 * i as f32, 0.3, 0.0)),
-            ColliderBuilder::cuboid(0.2, 0.2, 0.2).density(1000.0),
+            RigidBodyBuilder::dynamic().translation(v3(3.0 * i as f32, 0.3, 0.0)),
+            cuboid3(0.2, 0.2, 0.2).0.density(1000.0),
         );
         boxes.push(b);
     }
@@ -64,7 +65,7 @@ fn sleeping_contacts_keep_their_state_and_vanished_ones_lose_it() {
     // Woken, the box holds where it stopped: its state was kept, not rebuilt from zero
     // by a fresh landing.
     world.bodies[boxes[0]].wake_up(true);
-    world.bodies[boxes[1]].set_translation(Vector::new(3.0, 5.0, 0.0), true);
+    world.bodies[boxes[1]].set_translation(v3(3.0, 5.0, 0.0), true);
     for _ in 0..(2 * SWEEP_INTERVAL) {
         m.step(&mut world);
     }

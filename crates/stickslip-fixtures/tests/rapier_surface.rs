@@ -6,11 +6,11 @@
 //! on the belt is woken when it starts; stopping the belt hands an unattached belt's hook
 //! flag back and the box comes to rest, and keeps a flag said to be the user's; a snapshot
 //! keeps the surface.
-#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
+//! In 3D and in 2D (stickslip-fixtures2d).
 
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
-use stickslip_fixtures::{BoxOnGround, BoxScene};
+use stickslip_fixtures::{BoxOnGround, BoxScene, v3};
 use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, StickSlip};
 
@@ -57,11 +57,7 @@ fn a_belt_accelerates_a_box_at_kinetic_friction_and_carries_it() {
     let mut m = StickSlip::new(FrictionMaterial::new(ep()));
     m.attach(&mut s.world.colliders, s.ground, None);
     m.attach(&mut s.world.colliders, s.box_collider, None);
-    m.set_surface_velocity(
-        &mut s.world.colliders,
-        s.ground,
-        Vector::new(BELT, 0.0, 0.0),
-    );
+    m.set_surface_velocity(&mut s.world.colliders, s.ground, v3(BELT, 0.0, 0.0));
     let (a, v) = run_up(&mut s, &mut m, MU_K);
     assert!(
         (a - MU_K * G).abs() < 0.02 * MU_K * G,
@@ -77,11 +73,7 @@ fn a_belt_accelerates_a_box_at_kinetic_friction_and_carries_it() {
         c.set_friction(mu as f32);
     }
     let mut m = StickSlip::new(FrictionMaterial::new(ep()));
-    m.set_surface_velocity(
-        &mut s.world.colliders,
-        s.ground,
-        Vector::new(BELT, 0.0, 0.0),
-    );
+    m.set_surface_velocity(&mut s.world.colliders, s.ground, v3(BELT, 0.0, 0.0));
     let (a, v) = run_up(&mut s, &mut m, mu);
     assert!(
         (a - mu * G).abs() < 0.02 * mu * G,
@@ -104,11 +96,7 @@ fn a_belt_wakes_what_sleeps_on_it_and_stopping_it_hands_the_flag_back() {
             .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
     };
     assert!(!hooked(&s));
-    m.set_surface_velocity(
-        &mut s.world.colliders,
-        s.ground,
-        Vector::new(BELT, 0.0, 0.0),
-    );
+    m.set_surface_velocity(&mut s.world.colliders, s.ground, v3(BELT, 0.0, 0.0));
     assert!(hooked(&s));
     let v = run(&mut s, &mut m, 60);
     assert!(
@@ -122,13 +110,13 @@ fn a_belt_wakes_what_sleeps_on_it_and_stopping_it_hands_the_flag_back() {
     let restored = StickSlip::restore(&snap, &s.world.colliders, ()).unwrap();
     assert_eq!(
         restored.surface_velocity(s.ground),
-        Some(Vector::new(BELT, 0.0, 0.0))
+        Some(v3(BELT, 0.0, 0.0))
     );
 
     // Stopped: the flag stickslip set goes, and the box comes to rest on the ground.
     assert_eq!(
         m.remove_surface_velocity(&mut s.world.colliders, s.ground),
-        Some(Vector::new(BELT, 0.0, 0.0))
+        Some(v3(BELT, 0.0, 0.0))
     );
     assert!(!hooked(&s));
     let v = run(&mut s, &mut m, 60);
@@ -145,7 +133,7 @@ fn whose_belt_flag_it_is_is_the_modifiers_to_keep() {
             .active_hooks()
             .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
     };
-    let belt = Vector::new(BELT, 0.0, 0.0);
+    let belt = v3(BELT, 0.0, 0.0);
     for users in [true, false] {
         let mut s = scene();
         let mut m = StickSlip::new(FrictionMaterial::new(ep()));

@@ -41,6 +41,7 @@
 pub mod inspect;
 pub mod layout;
 pub mod paths;
+pub mod prelude;
 
 use rapier3d::prelude::*;
 use rerun::{

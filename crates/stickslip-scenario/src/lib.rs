@@ -31,6 +31,7 @@ mod build;
 mod drive;
 mod error;
 pub mod limits;
+pub mod prelude;
 mod runner;
 pub mod spec;
 

@@ -25,3 +25,4 @@ pub mod chain;
 pub mod feeder;
 mod integrate;
 pub mod popov;
+pub mod prelude;
