@@ -178,6 +178,18 @@ fn turned(d: Vec2, cos: f64, e: Vec2, turn: f64) -> Vec2 {
     )
 }
 
+/// cos φ after turning a direction at cos φ = `cos` towards the slip over `turn` (the cosine
+/// of [`turned`]'s result, without the vector: tan(φ/2) decays as e^(−turn)).
+fn turned_cos(cos: f64, turn: f64) -> f64 {
+    let decay = (-turn).exp();
+    let (plus, minus) = (1.0 + cos, (1.0 - cos) * decay * decay);
+    let den = plus + minus;
+    if !(den > f64::MIN_POSITIVE) {
+        return cos;
+    }
+    ((plus - minus) / den).clamp(-1.0, 1.0)
+}
+
 /// The α = 1 solution over `s` metres of slip along the unit `e` at level `m` with stiffness
 /// `c`, from `mu`: μ(s) = m e + d e^(−κ s), d = μ − m e, κ = c/m, and its dissipation per
 /// unit normal force, ∫|μ|²/m ds, in closed form.
@@ -1012,7 +1024,7 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
         // (The turn only raises cos φ, so a state that starts turned towards the slip does not
         // sink.)
         let cos1 = if cos0 < 0.0 {
-            dot(turned(d0, cos0, e, c * h / r0), e)
+            turned_cos(cos0, c * h / r0)
         } else {
             cos0
         };
@@ -1038,7 +1050,7 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
         });
         let contraction = h * c / m * (a0 + r0 * slope0);
         let theta = (0.5 * contraction / MIDPOINT_SPAN).clamp(0.5, 1.0);
-        let cos_theta = dot(turned(d0, cos0, e, theta * c * h / r0), e);
+        let cos_theta = turned_cos(cos0, theta * c * h / r0);
         let q = r0 + theta * h * c * cos_theta;
         if !(q > 0.0) {
             // Turned through the origin: the Cartesian form has no pole there.
