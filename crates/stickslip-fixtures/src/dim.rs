@@ -50,3 +50,13 @@ pub fn spin_z(b: &RigidBody) -> f32 {
     let w = b.angvel().z;
     w
 }
+
+/// The velocity of a body's material point at `p` (world): v + ω × (p − c).
+pub fn point_velocity(b: &RigidBody, p: Vector) -> Vector {
+    let arm = p - b.center_of_mass();
+    #[cfg(dim2)]
+    let v = b.linvel() + Vector::new(-arm.y, arm.x) * b.angvel();
+    #[cfg(not(dim2))]
+    let v = b.linvel() + b.angvel().cross(arm);
+    v
+}
