@@ -13,7 +13,6 @@ mod reference;
 
 mod conveyor;
 pub mod dim;
-#[cfg(not(dim2))]
 mod example1;
 pub mod ordinary;
 #[cfg(not(dim2))]
@@ -21,7 +20,6 @@ mod plate;
 mod sled;
 
 pub use conveyor::Conveyor;
-#[cfg(not(dim2))]
 pub use example1::example1;
 #[cfg(not(dim2))]
 pub use plate::{PlateMeasurement, VibratingPlate};

@@ -3,7 +3,7 @@
 //! Invariants: with the elasto-plastic contact the box does not move in phase I (within
 //! g_ba = μ_ba/c), it is at rest again at the end, and its final displacement is within 2 %
 //! of the core's exact switched (Phys) ODE reference.
-#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
+//! In 3D and in 2D (stickslip-fixtures2d).
 
 use stickslip_core::law::{Law, Physical};
 use stickslip_core::sliding_curve::Curve;

@@ -9,7 +9,11 @@
 //! normal load that drops to zero every period (Popov's mechanism lowers the mean friction), so
 //! EP approaches the rigid reference as c grows: its deviation does not grow from c = 1e5 to
 //! 1e7, and at c = 1e7 (g_ba = 50 nm) it is within 3 %.
-#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
+// 3D only: in 2D (stickslip-fixtures2d) EP at c = 1e5 and dt 1/3000 carries the part 13 %
+// slower than plain rapier2d in the first case (0.0612 against 0.0705 m/s), as both dimensions
+// do at the fine step (0.0596 against 0.0686), where 3D's coarse step agrees within 1 %: to be
+// understood before the 3 % claim is made for 2D.
+#![cfg(not(dim2))]
 
 use stickslip_fixtures::feeder_speed;
 use stickslip_theory::feeder::VibratoryFeeder;

@@ -8,7 +8,7 @@
 //! friction impulse of a step (the sled is velocity-driven), all four
 //! closed-form waveforms with β on both sides of β_c (sine: 0.5…12), drag speeds from about
 //! 1e-6 to 1 m/s, time-resolved at 50 and 100 steps per period and in averaged mode.
-#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
+//! In 3D and in 2D (stickslip-fixtures2d).
 
 use stickslip_core::waveform::Waveform;
 use stickslip_fixtures::{PopovDrag, PopovDrive};
