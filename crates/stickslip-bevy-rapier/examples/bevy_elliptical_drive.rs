@@ -9,7 +9,8 @@
 //! backward. The HUD shows each plate's measured mean speed beside the theory's.
 //! (`crates/stickslip-bevy-rapier/tests/drive.rs` checks the same headless.)
 //!
-//! Keys: F flip both ellipses (phase shift ↔ −phase shift), Space pause, R reset.
+//! Keys: F flip both ellipses (phase shift ↔ −phase shift), Space pause, S slow motion (×0.1),
+//! R reset.
 //!
 //! ```sh
 //! cargo run --release -p stickslip-bevy-rapier --features window --example bevy_elliptical_drive
@@ -19,7 +20,7 @@
 
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
-use stickslip_bevy_rapier::window::command_line;
+use stickslip_bevy_rapier::window::{Hud, command_line, hud_box, time_keys};
 use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapierPlugin, StickSlipVibration};
 use stickslip_core::law::Law;
 use stickslip_core::popov::{CompliantContact, Oscillation, free_drive_velocity};
@@ -94,9 +95,6 @@ struct Part {
     start: Vec3,
 }
 
-#[derive(Component)]
-struct Hud;
-
 /// Sign of the phase shifts (F flips it) and the parts' mean speeds.
 #[derive(Resource)]
 struct Drive {
@@ -138,7 +136,7 @@ fn main() -> AppExit {
     })
     .add_systems(Startup, setup)
     .add_systems(FixedUpdate, (measure, wrap).after(PhysicsSet::Writeback))
-    .add_systems(Update, (keys, hud));
+    .add_systems(Update, (keys, time_keys, hud));
     if let Some(shot) = shot {
         // Reproducible pictures: the window at a given frame, every frame 1/30 s.
         app.add_plugins(shot);
@@ -197,20 +195,7 @@ fn setup(
             ));
         }
     }
-    commands.spawn((
-        Hud,
-        Text::new(""),
-        TextFont {
-            font_size: FontSize::Px(18.0),
-            ..default()
-        },
-        Node {
-            position_type: PositionType::Absolute,
-            top: Val::Px(12.0),
-            left: Val::Px(12.0),
-            ..default()
-        },
-    ));
+    commands.spawn(hud_box());
 }
 
 /// Mean speed of each plate's parts along x, low-pass filtered over 0.3 s.
@@ -240,7 +225,6 @@ fn wrap(mut parts: Query<(&Part, &mut Transform)>) {
 fn keys(
     input: Res<ButtonInput<KeyCode>>,
     mut drive: ResMut<Drive>,
-    mut time: ResMut<Time<Virtual>>,
     mut plates: Query<(&Plate, &mut StickSlipVibration)>,
     mut parts: Query<(&Part, &mut Transform, &mut Velocity)>,
 ) {
@@ -251,13 +235,6 @@ fn keys(
             let (src, v) = source(sign * SHIFTS[p.0]);
             vib.0 = src;
             drive.theory[p.0] = v;
-        }
-    }
-    if input.just_pressed(KeyCode::Space) {
-        if time.is_paused() {
-            time.unpause();
-        } else {
-            time.pause();
         }
     }
     if input.just_pressed(KeyCode::KeyR) {
@@ -287,6 +264,6 @@ fn hud(drive: Res<Drive>, time: Res<Time<Virtual>>, mut text: Query<&mut Text, W
             drive.theory[i] * 1e3
         );
     }
-    s += "F flip the ellipses   Space pause   R reset";
+    s += "F flip the ellipses   Space pause   S slow motion   R reset";
     text.0 = s;
 }

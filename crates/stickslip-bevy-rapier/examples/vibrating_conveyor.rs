@@ -42,7 +42,7 @@ use bevy_rapier3d::plugin::RapierTransformPropagateSet;
 use bevy_rapier3d::prelude::*;
 use std::f32::consts::FRAC_PI_6;
 use stickslip_bevy_rapier::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
-use stickslip_bevy_rapier::window::command_line;
+use stickslip_bevy_rapier::window::{Hud, caption, command_line, hud_box, time_keys};
 use stickslip_bevy_rapier::{
     StickSlipContacts, StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin,
     StickSlipVibration,
@@ -135,7 +135,14 @@ fn main() -> AppExit {
     )
     .add_systems(
         Update,
-        (keys, colour_parts, hud, place_labels, vibration_cue),
+        (
+            keys,
+            time_keys,
+            colour_parts,
+            hud,
+            place_labels,
+            vibration_cue,
+        ),
     );
     if let Some(shot) = shot {
         // Reproducible pictures: the window at a given frame, every frame 1/30 s.
@@ -224,9 +231,6 @@ struct FeederTrough {
 /// Lane `i`'s label, placed over the lane on screen.
 #[derive(Component)]
 struct LaneLabel(usize);
-
-#[derive(Component)]
-struct Hud;
 
 /// Materials and meshes shared by the parts.
 #[derive(Resource)]
@@ -387,36 +391,9 @@ fn setup(
             ),
         ][lane]
             .clone();
-        commands.spawn((
-            LaneLabel(lane),
-            Text::new(title),
-            TextFont {
-                font_size: FontSize::Px(17.0),
-                ..default()
-            },
-            TextColor(Color::srgb(0.9, 0.92, 0.95)),
-            Node {
-                position_type: PositionType::Absolute,
-                ..default()
-            },
-        ));
+        commands.spawn((LaneLabel(lane), caption(title)));
     }
-    commands.spawn((
-        Hud,
-        Text::new(""),
-        TextFont {
-            font_size: FontSize::Px(15.0),
-            ..default()
-        },
-        Node {
-            position_type: PositionType::Absolute,
-            top: px(8),
-            left: px(8),
-            padding: UiRect::all(px(8)),
-            ..default()
-        },
-        BackgroundColor(Color::srgba(0.0, 0.0, 0.0, 0.55)),
-    ));
+    commands.spawn(hud_box());
 }
 
 /// Five parts per lane at the lanes' upper (or rear) end, at rest.
@@ -499,7 +476,6 @@ fn restart_parts(
 fn keys(
     mut commands: Commands,
     keys: Res<ButtonInput<KeyCode>>,
-    mut time: ResMut<Time<Virtual>>,
     fixed: Res<Time<Fixed>>,
     mut gizmos: ResMut<GizmoConfigStore>,
     popov_base: Query<(Entity, Has<StickSlipVibration>), With<PopovBase>>,
@@ -523,13 +499,6 @@ fn keys(
                 run.restart(fixed.elapsed_secs_f64());
             }
         }
-    }
-    if keys.just_pressed(KeyCode::Space) {
-        time.toggle();
-    }
-    if keys.just_pressed(KeyCode::KeyS) {
-        let slow = time.relative_speed() < 1.0;
-        time.set_relative_speed(if slow { 1.0 } else { 0.1 });
     }
     if keys.just_pressed(KeyCode::KeyG) {
         gizmos.config_mut::<StickSlipGizmos>().0.enabled ^= true;

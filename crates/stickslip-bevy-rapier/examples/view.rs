@@ -36,7 +36,7 @@ use stickslip_bevy_rapier::scenario::{
     DriverAction, LoadedScenario, Scenario, StickSlipScenarioPlugin, despawn_scenario,
     spawn_scenario,
 };
-use stickslip_bevy_rapier::window::command_line;
+use stickslip_bevy_rapier::window::{Hud, command_line, hud_box, time_keys};
 use stickslip_bevy_rapier::{StickSlipContacts, StickSlipRapier, StickSlipRapierPlugin};
 use stickslip_core::law::Regime;
 
@@ -81,7 +81,15 @@ fn main() -> AppExit {
     .add_systems(Startup, (setup, load).chain())
     .add_systems(
         Update,
-        (keys, add_meshes, colour_bodies, draw_springs, hud).chain(),
+        (
+            keys,
+            time_keys,
+            add_meshes,
+            colour_bodies,
+            draw_springs,
+            hud,
+        )
+            .chain(),
     );
     if let Some(shot) = shot {
         // Reproducible pictures: the window at a given frame, every frame 1/30 s.
@@ -112,10 +120,6 @@ impl Source {
 /// The scenario on screen.
 #[derive(Resource)]
 struct Current(Scenario);
-
-/// The HUD's text.
-#[derive(Component)]
-struct Hud;
 
 /// A dynamic body's collider, painted by the regime of its contacts.
 #[derive(Component)]
@@ -156,20 +160,7 @@ fn setup(mut commands: Commands, mut materials: ResMut<Assets<StandardMaterial>>
         ..default()
     });
     commands.spawn((Camera3d::default(), Transform::default()));
-    commands.spawn((
-        Hud,
-        Text::new(""),
-        TextFont {
-            font_size: FontSize::Px(15.0),
-            ..default()
-        },
-        Node {
-            position_type: PositionType::Absolute,
-            left: px(12),
-            top: px(10),
-            ..default()
-        },
-    ));
+    commands.spawn(hud_box());
 }
 
 /// Spawns the current scenario, frames its moving bodies and scales the gizmos to it.
@@ -205,17 +196,9 @@ fn load(world: &mut World) {
 fn keys(
     mut commands: Commands,
     keys: Res<ButtonInput<KeyCode>>,
-    mut time: ResMut<Time<Virtual>>,
     mut gizmos: ResMut<GizmoConfigStore>,
     source: Res<Source>,
 ) {
-    if keys.just_pressed(KeyCode::Space) {
-        time.toggle();
-    }
-    if keys.just_pressed(KeyCode::KeyS) {
-        let slow = time.relative_speed() < 1.0;
-        time.set_relative_speed(if slow { 1.0 } else { 0.1 });
-    }
     if keys.just_pressed(KeyCode::KeyG) {
         gizmos.config_mut::<StickSlipGizmos>().0.enabled ^= true;
     }

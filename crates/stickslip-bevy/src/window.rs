@@ -124,6 +124,60 @@ pub fn has_display(usage: &str) -> bool {
     false
 }
 
+/// The heads-up display of a windowed app: a text box at the window's top left corner, on a
+/// translucent backing; the app's own system writes its `Text` each frame.
+#[derive(Component, Debug, Default, Clone, Copy)]
+pub struct Hud;
+
+/// A [`Hud`] text box to spawn (15 px text, 8 px from the corner and of padding).
+pub fn hud_box() -> impl Bundle {
+    (
+        Hud,
+        Text::new(""),
+        TextFont {
+            font_size: FontSize::Px(15.0),
+            ..default()
+        },
+        Node {
+            position_type: PositionType::Absolute,
+            top: px(8),
+            left: px(8),
+            padding: UiRect::all(px(8)),
+            ..default()
+        },
+        BackgroundColor(Color::srgba(0.0, 0.0, 0.0, 0.55)),
+    )
+}
+
+/// A caption to spawn and place over the scene (17 px, light text, absolutely positioned: the
+/// app's own system sets its `Node`'s `left` and `top` from where its subject is on screen).
+pub fn caption(text: impl Into<String>) -> impl Bundle {
+    (
+        Text::new(text.into()),
+        TextFont {
+            font_size: FontSize::Px(17.0),
+            ..default()
+        },
+        TextColor(Color::srgb(0.9, 0.92, 0.95)),
+        Node {
+            position_type: PositionType::Absolute,
+            ..default()
+        },
+    )
+}
+
+/// Time controls every windowed app has: Space pauses and resumes, S toggles slow motion
+/// (a tenth of real time). Add it to `Update`.
+pub fn time_keys(keys: Res<ButtonInput<KeyCode>>, mut time: ResMut<Time<Virtual>>) {
+    if keys.just_pressed(KeyCode::Space) {
+        time.toggle();
+    }
+    if keys.just_pressed(KeyCode::KeyS) {
+        let slow = time.relative_speed() < 1.0;
+        time.set_relative_speed(if slow { 1.0 } else { 0.1 });
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
