@@ -11,12 +11,14 @@
 //! recycled because rapier's own full update writes the same μ) is recycled while it holds and
 //! breaks away at μ_ba, where the hooked one does. A world saved while contacts are recycled,
 //! and piles on a heightfield and on a compound ground (composite contact patches, recycled or
-//! not), resume bit for bit.
-#![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
+//! not), resume bit for bit. In 3D and in 2D (stickslip-fixtures2d: the platform carries
+//! along x, the stacks stand in a row; the composite grounds are 3D).
 
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
+use stickslip_fixtures::dim::body_bits;
 use stickslip_fixtures::ordinary::{Ground, box_on_slope};
+use stickslip_fixtures::{cuboid3, v3};
 use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, StickSlip, WorldSnapshot};
 
@@ -31,7 +33,7 @@ fn ep() -> Law {
 
 fn set_slope(world: &mut PhysicsWorld, tan_theta: f64) {
     let theta = tan_theta.atan();
-    world.gravity = Vector::new((G * theta.sin()) as f32, -(G * theta.cos()) as f32, 0.0);
+    world.gravity = v3((G * theta.sin()) as f32, -(G * theta.cos()) as f32, 0.0);
 }
 
 /// A box of `mass` on a cuboid ground, flat, everything attached; `recycling` sets rapier's
@@ -50,7 +52,7 @@ fn scene_with(
     let mut s = box_on_slope(Ground::Cuboid, 0.0, 0.5, dt);
     let b = s.bodies[0];
     let body = &mut s.world.bodies[b];
-    let density = mass / 0.125;
+    let density = mass / cuboid3(0.25, 0.25, 0.25).1;
     for h in body.colliders().to_vec() {
         s.world.colliders[h].set_density(density);
     }
@@ -77,18 +79,19 @@ fn box_collider(world: &PhysicsWorld, b: RigidBodyHandle) -> ColliderHandle {
 /// which the box's contacts were recycled.
 fn break_away_under_a_ramp(mass: f32, dt: f64, recycling: bool, rate: f64) -> (f64, f64) {
     let (world, m, b) = scene(mass, dt, recycling);
-    ramp_to_break_away(world, m, b, dt, rate)
+    ramp_to_break_away(world, m, b, dt, rate, 0.0)
 }
 
 /// Raises the slope's tangent by `rate` per second from 0.3 until body `b` slides (downhill
-/// speed above 1 cm/s): the tangent then, and the share of the hold before 0.35 in which its
-/// collider's contacts were recycled.
+/// speed above 1 cm/s relative to its ground, whose velocity along x is `base_vx`): the tangent
+/// then, and the share of the hold before 0.35 in which its collider's contacts were recycled.
 fn ramp_to_break_away(
     mut world: PhysicsWorld,
     mut m: StickSlip,
     b: RigidBodyHandle,
     dt: f64,
     rate: f64,
+    base_vx: f32,
 ) -> (f64, f64) {
     let collider = box_collider(&world, b);
     let (mut recycled, mut held) = (0usize, 0usize);
@@ -100,7 +103,7 @@ fn ramp_to_break_away(
             held += 1;
             recycled += usize::from(m.is_recycled(collider));
         }
-        if world.bodies[b].linvel().x > 0.01 {
+        if world.bodies[b].linvel().x - base_vx > 0.01 {
             return (tan, recycled as f64 / held as f64);
         }
         tan += rate * dt;
@@ -146,25 +149,37 @@ fn a_recycled_contact_breaks_away_under_a_rising_load_where_a_hooked_one_does() 
 /// starts sliding on the platform (downhill speed above 1 cm/s) while the tangent rises by
 /// `rate` per second from 0.3, and the share of the hold before 0.35 in which the box's
 /// contacts were recycled.
+/// A platform's velocity and half-length along x: across the load (along z) in 3D, along it
+/// in 2D (so the platform is long).
+fn carried() -> (Vector, f32) {
+    #[cfg(not(dim2))]
+    let c = (v3(0.0, 0.0, 0.5), 5.0);
+    #[cfg(dim2)]
+    let c = (v3(0.5, 0.0, 0.0), 200.0);
+    c
+}
+
 fn break_away_on_a_moving_platform(mass: f32, dt: f64, recycling: bool, rate: f64) -> (f64, f64) {
     let mut world = PhysicsWorld::default();
     world.integration_parameters.dt = dt as f32;
     world.integration_parameters.contact_recycling = recycling;
-    let v = Vector::new(0.0, 0.0, 0.5);
+    let (v, under_half) = carried();
     let platform = world.insert_body(RigidBodyBuilder::kinematic_velocity_based().linvel(v));
     let under = world.insert_collider(
-        ColliderBuilder::cuboid(5.0, 0.1, 200.0)
-            .translation(Vector::new(0.0, -0.1, 0.0))
+        cuboid3(under_half, 0.1, 200.0)
+            .0
+            .translation(v3(0.0, -0.1, 0.0))
             .friction(MU_BA as f32),
         Some(platform),
     );
     let (b, on) = world.insert(
         RigidBodyBuilder::dynamic()
-            .translation(Vector::new(0.0, 0.25, 0.0))
+            .translation(v3(0.0, 0.25, 0.0))
             .linvel(v)
             .can_sleep(false),
-        ColliderBuilder::cuboid(0.25, 0.25, 0.25)
-            .density(mass / 0.125)
+        cuboid3(0.25, 0.25, 0.25)
+            .0
+            .density(mass / cuboid3(0.25, 0.25, 0.25).1)
             .friction(MU_BA as f32),
     );
     let mut m = StickSlip::new(FrictionMaterial::new(ep()));
@@ -175,7 +190,7 @@ fn break_away_on_a_moving_platform(mass: f32, dt: f64, recycling: bool, rate: f6
     for _ in 0..(0.5 / dt) as usize {
         m.step(&mut world);
     }
-    ramp_to_break_away(world, m, b, dt, rate)
+    ramp_to_break_away(world, m, b, dt, rate, v.x)
 }
 
 #[test]
@@ -271,15 +286,11 @@ fn a_recycled_contact_holds_or_slides_after_a_jump_in_load_as_a_hooked_one() {
 
 /// Every body's pose and velocity, as bits.
 fn bits(world: &PhysicsWorld) -> Vec<u32> {
-    let mut out = Vec::new();
-    for (_, b) in world.bodies.iter() {
-        let p = b.position();
-        out.extend(p.translation.to_array().map(f32::to_bits));
-        out.extend(p.rotation.to_array().map(f32::to_bits));
-        out.extend(b.linvel().to_array().map(f32::to_bits));
-        out.extend(b.angvel().to_array().map(f32::to_bits));
-    }
-    out
+    world
+        .bodies
+        .iter()
+        .flat_map(|(_, b)| body_bits(b))
+        .collect()
 }
 
 /// Runs `world` with `m` for `before` steps, saves both, resumes, and compares the two runs
@@ -326,14 +337,19 @@ fn resumes_bit_identically(
 /// `world`, every collider attached.
 fn stacks_on(world: &mut PhysicsWorld, v: Vector) -> StickSlip {
     for i in 0..36 {
-        let (x, z) = ((i % 6) as f32 - 2.5, (i / 6) as f32 - 2.5);
+        // A 6 × 6 grid; in 2D a row.
+        #[cfg(not(dim2))]
+        let (x, z) = (1.2 * ((i % 6) as f32 - 2.5), 1.2 * ((i / 6) as f32 - 2.5));
+        #[cfg(dim2)]
+        let (x, z) = (0.6 * (i as f32 - 17.5), 0.0);
         for level in 0..2 {
             world.insert(
                 RigidBodyBuilder::dynamic()
-                    .translation(Vector::new(1.2 * x, 0.76 + 0.5 * level as f32, 1.2 * z))
+                    .translation(v3(x, 0.76 + 0.5 * level as f32, z))
                     .linvel(v)
                     .can_sleep(false),
-                ColliderBuilder::cuboid(0.25, 0.25, 0.25)
+                cuboid3(0.25, 0.25, 0.25)
+                    .0
                     .density(500.0)
                     .friction(MU_BA as f32),
             );
@@ -349,10 +365,7 @@ fn stacks_on(world: &mut PhysicsWorld, v: Vector) -> StickSlip {
 #[test]
 fn a_snapshot_taken_while_contacts_recycle_resumes_bit_identically() {
     let mut world = PhysicsWorld::default();
-    world.insert_collider(
-        ColliderBuilder::cuboid(10.0, 0.5, 10.0).friction(MU_BA as f32),
-        None,
-    );
+    world.insert_collider(cuboid3(12.0, 0.5, 10.0).0.friction(MU_BA as f32), None);
     let m = stacks_on(&mut world, Vector::ZERO);
     // After the snapshot the floor tilts past break-away: recycled contacts are hooked again
     // in both runs, and the stacks slide.
@@ -363,10 +376,10 @@ fn a_snapshot_taken_while_contacts_recycle_resumes_bit_identically() {
 #[test]
 fn a_snapshot_taken_while_carried_contacts_recycle_resumes_bit_identically() {
     let mut world = PhysicsWorld::default();
-    let v = Vector::new(0.0, 0.0, 0.5);
+    let (v, half) = carried();
     let platform = world.insert_body(RigidBodyBuilder::kinematic_velocity_based().linvel(v));
     world.insert_collider(
-        ColliderBuilder::cuboid(10.0, 0.5, 200.0).friction(MU_BA as f32),
+        cuboid3(half.max(12.0), 0.5, 200.0).0.friction(MU_BA as f32),
         Some(platform),
     );
     let m = stacks_on(&mut world, v);
@@ -376,16 +389,17 @@ fn a_snapshot_taken_while_carried_contacts_recycle_resumes_bit_identically() {
 }
 
 /// A pile of boxes and balls dropped on a composite ground.
+#[cfg(not(dim2))]
 fn pile_on(ground: Ground) -> (PhysicsWorld, StickSlip) {
     let mut world = PhysicsWorld::default();
     ground.insert(&mut world, 6.0, 0.5);
     for i in 0..48 {
         let (x, z, y) = ((i % 4) as f32, ((i / 4) % 4) as f32, (i / 16) as f32);
-        let at = Vector::new(0.7 * x - 1.0 + 0.1 * y, 0.4 + 0.8 * y, 0.7 * z - 1.0);
+        let at = v3(0.7 * x - 1.0 + 0.1 * y, 0.4 + 0.8 * y, 0.7 * z - 1.0);
         let shape = if i % 3 == 0 {
             ColliderBuilder::ball(0.25)
         } else {
-            ColliderBuilder::cuboid(0.25, 0.2, 0.3)
+            cuboid3(0.25, 0.2, 0.3).0
         };
         world.insert(
             RigidBodyBuilder::dynamic().translation(at),
@@ -399,6 +413,7 @@ fn pile_on(ground: Ground) -> (PhysicsWorld, StickSlip) {
     (world, m)
 }
 
+#[cfg(not(dim2))]
 #[test]
 fn piles_on_a_heightfield_and_a_compound_resume_bit_identically() {
     for ground in [Ground::HeightField, Ground::Compound] {
