@@ -1,5 +1,5 @@
 //! What differs between the 3D and the 2D build of the tests (cfg `dim2`), so a test is
-//! written once: a body's state as bits, a spin about the plane's normal. (Vectors and
+//! written once: a body's (and a world's) state as bits, a spin about the plane's normal. (Vectors and
 //! cuboids from 3D components: [`crate::v3`], [`crate::cuboid3`].)
 
 use stickslip_rapier::rapier::prelude::*;
@@ -19,6 +19,15 @@ pub fn body_bits(b: &RigidBody) -> Vec<u32> {
         out.extend(b.angvel().to_array().map(f32::to_bits));
     }
     out
+}
+
+/// The bits of every body's pose and velocities, in the world's body order.
+pub fn world_bits(world: &PhysicsWorld) -> Vec<u32> {
+    world
+        .bodies
+        .iter()
+        .flat_map(|(_, b)| body_bits(b))
+        .collect()
 }
 
 /// An angular velocity of `w` (rad/s) about z, the 2D plane's normal.

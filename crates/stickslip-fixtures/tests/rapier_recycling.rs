@@ -16,7 +16,7 @@
 
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
-use stickslip_fixtures::dim::body_bits;
+use stickslip_fixtures::dim::world_bits;
 use stickslip_fixtures::ordinary::{Ground, box_on_slope};
 use stickslip_fixtures::{cuboid3, v3};
 use stickslip_rapier::rapier::prelude::*;
@@ -284,15 +284,6 @@ fn a_recycled_contact_holds_or_slides_after_a_jump_in_load_as_a_hooked_one() {
     }
 }
 
-/// Every body's pose and velocity, as bits.
-fn bits(world: &PhysicsWorld) -> Vec<u32> {
-    world
-        .bodies
-        .iter()
-        .flat_map(|(_, b)| body_bits(b))
-        .collect()
-}
-
 /// Runs `world` with `m` for `before` steps, saves both, resumes, and compares the two runs
 /// bit for bit over `after` steps, with `event` applied to both worlds at step `event_at`
 /// after the snapshot. Returns how many attached colliders were recycled at the snapshot.
@@ -326,7 +317,7 @@ fn resumes_bit_identically(
         m.step(&mut world);
         m2.step(&mut w2);
         assert!(
-            bits(&world) == bits(&w2),
+            world_bits(&world) == world_bits(&w2),
             "diverged {k} steps after restore"
         );
     }

@@ -22,7 +22,7 @@
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 use stickslip_core::waveform::Waveform;
-use stickslip_fixtures::dim::{body_bits, spin};
+use stickslip_fixtures::dim::{spin, world_bits};
 use stickslip_fixtures::{BoxOnGround, BoxScene, cuboid3, v3};
 use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::snapshot::SnapshotError;
@@ -60,15 +60,6 @@ const BAD_DTS: [f32; 8] = [
     f32::MAX,
 ];
 
-/// Bits of the bodies' poses and velocities.
-fn bodies_bits(world: &PhysicsWorld) -> Vec<u32> {
-    world
-        .bodies
-        .iter()
-        .flat_map(|(_, b)| body_bits(b))
-        .collect()
-}
-
 fn modifier_bytes(m: &StickSlip) -> Vec<u8> {
     let mut bytes = Vec::new();
     m.snapshot().save(&mut bytes).unwrap();
@@ -100,17 +91,13 @@ fn steps_with_an_invalid_dt_are_skipped_without_any_change() {
         m.step(&mut scene.world);
     }
     let good = scene.world.integration_parameters.dt;
-    let (bodies, state) = (bodies_bits(&scene.world), modifier_bytes(&m));
+    let (bodies, state) = (world_bits(&scene.world), modifier_bytes(&m));
     let (time, totals, reports) = (m.time(), m.totals().unwrap(), m.reports().unwrap().to_vec());
     assert_eq!(reports.len(), 1);
     for bad in BAD_DTS {
         scene.world.integration_parameters.dt = bad;
         m.step(&mut scene.world);
-        assert_eq!(
-            bodies_bits(&scene.world),
-            bodies,
-            "dt {bad}: rapier stepped"
-        );
+        assert_eq!(world_bits(&scene.world), bodies, "dt {bad}: rapier stepped");
         assert!(
             modifier_bytes(&m) == state,
             "dt {bad}: the modifier's state changed"
@@ -161,8 +148,8 @@ fn begin_and_end_step_around_an_invalid_dt_change_nothing_that_follows() {
         m_control.step(&mut control.world);
         m.step(&mut scene.world);
         assert_eq!(
-            bodies_bits(&scene.world),
-            bodies_bits(&control.world),
+            world_bits(&scene.world),
+            world_bits(&control.world),
             "step {k} after the skipped steps"
         );
         assert_eq!(m.reports().unwrap(), m_control.reports().unwrap());
