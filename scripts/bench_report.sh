@@ -8,7 +8,9 @@
 #   2. the report binary `benches/src/bin/bench_report` (accuracy in rapier worlds, the seed's EP
 #      versus Regul comparison), which reads both and writes the markdown;
 #   3. the avian add-on's bench `crates/stickslip-avian/benches/avian_step.rs`, its section
-#      appended by scripts/avian_bench_section.py.
+#      appended by scripts/avian_bench_section.py;
+#   4. the kernel bench `crates/stickslip-core/benches/kernel.rs`, its section appended by
+#      scripts/kernel_bench_section.py.
 #
 # Usage: scripts/bench_report.sh [--quick] [--out FILE]
 #   --quick   skip the ~100k-contact plane (the scaling target is then reported as not run)
@@ -27,7 +29,7 @@ while [[ $# -gt 0 ]]; do
     case "$1" in
         --quick) full=0 ;;
         --out) out="$2"; shift ;;
-        -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
         *) echo "unknown argument: $1" >&2; exit 2 ;;
     esac
     shift
@@ -72,5 +74,9 @@ bench_s=$((t2 - t1))
 # shellcheck disable=SC2086
 cargo bench ${CARGO_FLAGS:-} -p stickslip-avian --bench avian_step | tee "$work/avian.log"
 python3 scripts/avian_bench_section.py "$CRITERION_HOME" >> "$out"
+# The engine-free contact kernel alone (per class of recorded contact steps), its own section.
+# shellcheck disable=SC2086
+cargo bench ${CARGO_FLAGS:-} -p stickslip-core --bench kernel | tee "$work/kernel.log"
+python3 scripts/kernel_bench_section.py "$CRITERION_HOME" >> "$out"
 t3=$(secs)
 echo "build $build_s s, benches $bench_s s, report and avian $((t3 - t2)) s -> $out"
