@@ -190,6 +190,54 @@ const GAUSS_LEGENDRE_6: [(f64, f64); 6] = [
     (0.932_469_514_203_152, 0.171_324_492_379_170_3),
 ];
 
+/// ∫ dr/F and ∫ r/F dr from `a` to `b` by 6-point Gauss–Legendre, F = `rate` of one sign on
+/// the way: the slip a state takes along a line from |μ| = a to b and the work ∫ r ds it does
+/// there per unit normal force (F = dr/ds; both positive either way).
+fn line_path(a: f64, b: f64, rate: &impl Fn(f64) -> f64) -> (f64, f64) {
+    let (half, mid) = (0.5 * (b - a), 0.5 * (a + b));
+    let (mut path, mut work) = (0.0, 0.0);
+    for (x, w) in GAUSS_LEGENDRE_6 {
+        let r = mid + half * x;
+        let f = rate(r);
+        path += w / f;
+        work += w * r / f;
+    }
+    (path * half, work * half)
+}
+
+/// The |μ| between `from` and `to` where the slip from `from` ([`line_path`]) equals `rest`,
+/// less than the `whole` way's: Newton's method (slope 1/F), kept in its bracket, to steps of
+/// 1e-12 `scale`.
+fn line_end(
+    from: f64,
+    to: f64,
+    rest: f64,
+    whole: f64,
+    scale: f64,
+    rate: &impl Fn(f64) -> f64,
+) -> f64 {
+    let (mut short, mut long) = (from, to);
+    let mut x = from + (to - from) * rest / whole;
+    for _ in 0..50 {
+        let g = line_path(from, x, rate).0 - rest;
+        if g > 0.0 {
+            long = x
+        } else {
+            short = x
+        }
+        let mut next = x - g * rate(x);
+        if !(next > short.min(long) && next < short.max(long)) {
+            next = 0.5 * (short + long);
+        }
+        let done = (next - x).abs() <= 1e-12 * scale;
+        x = next;
+        if done {
+            break;
+        }
+    }
+    x
+}
+
 /// Distance below the band's top U within which 1 − α(|μ|) ≤ `share`: near U,
 /// 1 − α = sin²(π (U − |μ|) / (2 (U − L))).
 fn below_top(lo: f64, hi: f64, share: f64) -> f64 {
@@ -505,6 +553,23 @@ struct Piece {
     dissipated: f64,
 }
 
+/// What a piece starts from: the state μ⃗ (|μ⃗| = `mag`) with progress σ, the rest of the
+/// step's slip path along the unit `e`, the stiffness c, the sliding level m, the band
+/// (`lo`, `hi`) = [L, U] and the progress's slip width w_σ.
+#[derive(Clone, Copy)]
+struct Slide {
+    mu: Vec2,
+    mag: f64,
+    sigma: f64,
+    e: Vec2,
+    rest: f64,
+    c: f64,
+    m: f64,
+    lo: f64,
+    hi: f64,
+    w_sigma: f64,
+}
+
 impl<C: SlidingCurve> ElastoPlastic<C> {
     /// Builds the default ([`EpVariant::Latched`]) law: stiffness `c` (1/m), thresholds
     /// `mu_ba <= mu_max` of the switch, and any sliding curve μ_ve > 0 (rising, flat, or
@@ -711,6 +776,18 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
     ) -> Piece {
         let (lo, hi) = self.band(sigma, m);
         let mag = norm(mu);
+        let at = Slide {
+            mu,
+            mag,
+            sigma,
+            e,
+            rest,
+            c,
+            m,
+            lo,
+            hi,
+            w_sigma,
+        };
         // A state put onto the band edge by the previous piece counts as on it, unless the
         // slip takes it inwards.
         if mag < lo * (1.0 - 1e-12) || (mag <= lo * (1.0 + 1e-12) && dot(mu, e) < 0.0) {
@@ -741,7 +818,7 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
             && (hi * (1.0 - 1e-12)..=hi * (1.0 + 1e-12)).contains(&mag)
             && m >= hi
             && self.band(1.0, m) == (lo, hi)
-            && let Some(p) = self.on_sharp_band(mu, mag, sigma, e, rest, c, m, hi, w_sigma)
+            && let Some(p) = self.on_sharp_band(&at)
         {
             return p;
         }
@@ -791,7 +868,7 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
             && lo < hi
             && mag < hi
             && (m - hi).abs() <= 1e-12 * hi
-            && let Some(p) = self.aligned_in_band(mu, mag, sigma, e, rest, c, m, lo, hi, w_sigma)
+            && let Some(p) = self.aligned_in_band(&at)
         {
             return p;
         }
@@ -800,7 +877,7 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
         if fixed_band
             && lo < hi
             && mag <= hi * (1.0 + 1e-12)
-            && let Some(p) = self.reversed_in_band(mu, mag, sigma, e, rest, c, m, lo, hi, w_sigma)
+            && let Some(p) = self.reversed_in_band(&at)
         {
             return p;
         }
@@ -811,7 +888,7 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
             && lo < hi
             && mag < hi
             && m <= hi * (1.0 + 1e-12)
-            && let Some(p) = self.turning_in_band(mu, mag, sigma, e, rest, c, m, lo, hi, w_sigma)
+            && let Some(p) = self.turning_in_band(&at)
         {
             return p;
         }
@@ -854,19 +931,19 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
     /// with t = tan(φ/2), U (s − (U/c) ln((1 + t₀²)/(1 + t₁²))), the α = 1 part by
     /// `slide_exactly`. A turning slide on the scenes' default sharp band took 48 sub-steps of
     /// a quarter h_max here (every length rule of the sub-steps is 0 on a band of width 0).
-    #[allow(clippy::too_many_arguments)]
-    fn on_sharp_band(
-        &self,
-        mu: Vec2,
-        mag: f64,
-        sigma: f64,
-        e: Vec2,
-        rest: f64,
-        c: f64,
-        m: f64,
-        hi: f64,
-        w_sigma: f64,
-    ) -> Option<Piece> {
+    fn on_sharp_band(&self, at: &Slide) -> Option<Piece> {
+        let Slide {
+            mu,
+            mag,
+            sigma,
+            e,
+            rest,
+            c,
+            m,
+            hi,
+            w_sigma,
+            ..
+        } = *at;
         let d0 = scale(mu, 1.0 / mag);
         let cos0 = dot(d0, e).clamp(-1.0, 1.0);
         if cos0 < 0.0 {
@@ -920,20 +997,19 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
     /// A slide whose load changes every step (vibration, a Stribeck curve, a load shared
     /// between contacts) starts each step inside the band: it took up to [`MAX_PIECES`]
     /// sub-steps climbing to the flat top.
-    #[allow(clippy::too_many_arguments)]
-    fn aligned_in_band(
-        &self,
-        mu: Vec2,
-        mag: f64,
-        sigma: f64,
-        e: Vec2,
-        rest: f64,
-        c: f64,
-        m: f64,
-        lo: f64,
-        hi: f64,
-        w_sigma: f64,
-    ) -> Option<Piece> {
+    fn aligned_in_band(&self, at: &Slide) -> Option<Piece> {
+        let Slide {
+            mu,
+            mag,
+            sigma,
+            e,
+            rest,
+            c,
+            m,
+            lo,
+            hi,
+            w_sigma,
+        } = *at;
         let cos0 = dot(mu, e) / mag;
         if !(cos0 >= 1.0 - ALIGNED_1D) || mag < lo * (1.0 - 1e-12) {
             return None;
@@ -942,50 +1018,19 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
         let zone = TOP_ZONE * width;
         let (mut r, mut used, mut work) = (mag.max(lo), 0.0, 0.0);
         let rate = |x: f64| c * (1.0 - sine_blend(x, lo, hi).0 * x / m);
-        // The slip and the work of the climb from `a` to `b`: ∫ dr/F and ∫ r/F dr.
-        let climb = |a: f64, b: f64| {
-            let (half, mid) = (0.5 * (b - a), 0.5 * (a + b));
-            let (mut path, mut w_int) = (0.0, 0.0);
-            for (x, w) in GAUSS_LEGENDRE_6 {
-                let rr = mid + half * x;
-                let f = rate(rr);
-                path += w / f;
-                w_int += w * rr / f;
-            }
-            (path * half, w_int * half)
-        };
         if r < hi - zone {
             // The steep part, F ≥ F(U − δ_z) > 0 (m = U).
             let b = hi - zone;
             if !(rate(b) > 0.0) {
                 return None;
             }
-            let (path, w_int) = climb(r, b);
+            let (path, w_int) = line_path(r, b, &rate);
             if path <= rest {
                 (r, used, work) = (b, path, w_int);
             } else {
-                // The step ends on the way: the r₁ whose climb takes the whole rest, by
-                // Newton's method on ∫ dr/F = rest (slope 1/F), kept in its bracket.
-                let (mut a_lo, mut a_hi) = (r, b);
-                let mut x = r + (b - r) * rest / path;
-                for _ in 0..50 {
-                    let g = climb(r, x).0 - rest;
-                    if g > 0.0 {
-                        a_hi = x
-                    } else {
-                        a_lo = x
-                    }
-                    let mut next = x - g * rate(x);
-                    if !(next > a_lo && next < a_hi) {
-                        next = 0.5 * (a_lo + a_hi);
-                    }
-                    let done = (next - x).abs() <= 1e-12 * hi;
-                    x = next;
-                    if done {
-                        break;
-                    }
-                }
-                let (_, w_int) = climb(r, x);
+                // The step ends on the way: the r₁ whose climb takes the whole rest.
+                let x = line_end(r, b, rest, path, hi, &rate);
+                let (_, w_int) = line_path(r, x, &rate);
                 let d1 = turned(
                     scale(mu, 1.0 / mag),
                     cos0.min(1.0),
@@ -1043,65 +1088,33 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
     /// (as `aligned_in_band`'s climb); a step that ends on the way ends where that slip equals
     /// its path (Newton's method). A slide that reverses took a handful of polar sub-steps
     /// through the band, each with Newton's method on the radius.
-    #[allow(clippy::too_many_arguments)]
-    fn reversed_in_band(
-        &self,
-        mu: Vec2,
-        mag: f64,
-        sigma: f64,
-        e: Vec2,
-        rest: f64,
-        c: f64,
-        m: f64,
-        lo: f64,
-        hi: f64,
-        w_sigma: f64,
-    ) -> Option<Piece> {
+    fn reversed_in_band(&self, at: &Slide) -> Option<Piece> {
+        let Slide {
+            mu,
+            mag,
+            sigma,
+            e,
+            rest,
+            c,
+            m,
+            lo,
+            hi,
+            w_sigma,
+        } = *at;
         let d0 = scale(mu, 1.0 / mag);
         let cos0 = dot(d0, e);
         if !(cos0 <= -1.0 + ALIGNED_1D) || !(mag > lo) {
             return None;
         }
         let r0 = mag.min(hi);
-        let rate = |x: f64| c * (1.0 + sine_blend(x, lo, hi).0 * x / m);
-        // The slip and ∫ r ds of the sink from `b` down to `a`.
-        let sink = |a: f64, b: f64| {
-            let (half, mid) = (0.5 * (b - a), 0.5 * (a + b));
-            let (mut path, mut w_int) = (0.0, 0.0);
-            for (x, w) in GAUSS_LEGENDRE_6 {
-                let rr = mid + half * x;
-                let f = rate(rr);
-                path += w / f;
-                w_int += w * rr / f;
-            }
-            (path * half, w_int * half)
-        };
-        let (path, w_int) = sink(lo, r0);
+        let rate = |x: f64| -c * (1.0 + sine_blend(x, lo, hi).0 * x / m);
+        let (path, lever) = line_path(r0, lo, &rate);
         let (r1, used, lever) = if path <= rest {
-            (lo, path, w_int)
+            (lo, path, lever)
         } else {
-            // The r₁ whose sink takes the whole rest: Newton's method on ∫ dr/F = rest
-            // (slope −1/F in r₁), kept in its bracket.
-            let (mut a_lo, mut a_hi) = (lo, r0);
-            let mut x = r0 - (r0 - lo) * rest / path;
-            for _ in 0..50 {
-                let g = sink(x, r0).0 - rest;
-                if g > 0.0 {
-                    a_lo = x
-                } else {
-                    a_hi = x
-                }
-                let mut next = x + g * rate(x);
-                if !(next > a_lo && next < a_hi) {
-                    next = 0.5 * (a_lo + a_hi);
-                }
-                let done = (next - x).abs() <= 1e-12 * hi;
-                x = next;
-                if done {
-                    break;
-                }
-            }
-            (x, rest, sink(x, r0).1)
+            // The r₁ whose sink takes the whole rest.
+            let x = line_end(r0, lo, rest, path, hi, &rate);
+            (x, rest, line_path(r0, x, &rate).1)
         };
         let d1 = turned(d0, cos0.max(-1.0), e, 2.0 * c * used / (r0 + r1));
         let stored = (r1 * r1 - mag * mag) / (2.0 * c);
@@ -1135,20 +1148,19 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
     /// middle, where N (or α) flattens and Q's freezing stops converging, the polar
     /// sub-steps take over. The work is ∫ r cos φ ds with r at each sub-step's mean and
     /// cos φ's exact mean over the turn.
-    #[allow(clippy::too_many_arguments)]
-    fn turning_in_band(
-        &self,
-        mu: Vec2,
-        mag: f64,
-        sigma: f64,
-        e: Vec2,
-        rest: f64,
-        c: f64,
-        m: f64,
-        lo: f64,
-        hi: f64,
-        w_sigma: f64,
-    ) -> Option<Piece> {
+    fn turning_in_band(&self, at: &Slide) -> Option<Piece> {
+        let Slide {
+            mu,
+            mag,
+            sigma,
+            e,
+            rest,
+            c,
+            m,
+            lo,
+            hi,
+            w_sigma,
+        } = *at;
         let d0 = scale(mu, 1.0 / mag);
         let cos0 = dot(d0, e).clamp(-1.0, 1.0);
         if !(cos0 >= 0.0) || mag < lo * (1.0 - 1e-12) {
@@ -1796,9 +1808,19 @@ mod tests {
                     let (sin, cos) = turn.to_radians().sin_cos();
                     for r0 in [hi - 0.4 * w, hi - 0.1 * w, hi - 1e-3 * w] {
                         let mu0 = [r0 * cos, r0 * sin];
-                        let taken = law
-                            .turning_in_band(mu0, r0, 1.0, [1.0, 0.0], m / c, c, m, lo, hi, 1.0)
-                            .is_some();
+                        let at = Slide {
+                            mu: mu0,
+                            mag: r0,
+                            sigma: 1.0,
+                            e: [1.0, 0.0],
+                            rest: m / c,
+                            c,
+                            m,
+                            lo,
+                            hi,
+                            w_sigma: 1.0,
+                        };
+                        let taken = law.turning_in_band(&at).is_some();
                         assert!(taken, "{turn}° from {r0}: not taken");
                         pieces += usize::from(taken);
                         starts += 1;
