@@ -1143,8 +1143,10 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
     /// same holds for the height y = |μ| − L with y' = m cos φ − α(r) r, α r = Q(y) y²
     /// (α = sin²(π y/2W) there, as 1 − α = sin²(π δ/2W) at the top). A frozen b and Q at a
     /// fixed point are exact, the contraction s is taken exactly and y stays in [0, W/2], so
-    /// sub-steps may span up to [`TURN_TAU`] relaxation lengths; a turning slide that took
-    /// seven to ten polar sub-steps with Newton's method takes one to three. Across the
+    /// sub-steps may span up to [`TURN_TAU`] relaxation lengths (and [`TURN_K`]/t²): the
+    /// kernel bench's slide turned by 30° a step over 1.5 relaxation lengths took seven polar
+    /// sub-steps with Newton's method and takes one Riccati sub-step (its state starts some
+    /// 38° off the slip, t² ≈ 0.12, so the length rule allows 1.6 lengths). Across the
     /// middle, where N (or α) flattens and Q's freezing stops converging, the polar
     /// sub-steps take over. The work is ∫ r cos φ ds with r at each sub-step's mean and
     /// cos φ's exact mean over the turn.
