@@ -105,6 +105,14 @@ fn stands(kind: Stack, size: usize) {
                 "    from 2 s, still settling: plain > 1 mm {}, creep {:.2e} m",
                 plain_early.over_1mm, plain_early.creep
             );
+            // What any hook gets while the tower settles: every pair of a hooked collider is
+            // updated in full at every step (rapier recycles no hooked pair). Printed beside
+            // the laws' windows: they lie between the two baselines or beyond.
+            let (_, hooked_early, _) = stillness(kind, size, tan_theta, &Friction::Hooked);
+            println!(
+                "    from 2 s, still settling: no-op hook > 1 mm {}, creep {:.2e} m",
+                hooked_early.over_1mm, hooked_early.creep
+            );
         }
         let mut laws = all_laws(0.5);
         // Regul has no sticking: it creeps at ġ_t0 r⁻¹(|μ|/μ_ve) under any load by design
