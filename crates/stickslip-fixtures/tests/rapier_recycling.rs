@@ -9,7 +9,10 @@
 //! (both hold: `crates/stickslip-fixtures/tests/rapier_load_jump.rs`), sliding at g (sin θ − μ_k cos θ) after a jump to
 //! 1.2 μ_ba. The same box carried at 0.5 m/s by a kinematic platform (a pair that moves,
 //! recycled because rapier's own full update writes the same μ) is recycled while it holds and
-//! breaks away at μ_ba, where the hooked one does. A world saved while contacts are recycled,
+//! breaks away at μ_ba, where the hooked one does; so does a box stacked on another on a
+//! belt (a surface stickslip hooks at every step): the boxes' pair between them is recycled
+//! while it holds, the belt's pairs being hooked by the belt alone. A world saved while
+//! contacts are recycled,
 //! and piles on a heightfield and on a compound ground (composite contact patches, recycled or
 //! not), resume bit for bit. In 3D and in 2D (stickslip-fixtures2d: the platform carries
 //! along x, the stacks stand in a row; the composite grounds are 3D).
@@ -86,14 +89,28 @@ fn break_away_under_a_ramp(mass: f32, dt: f64, recycling: bool, rate: f64) -> (f
 /// speed above 1 cm/s relative to its ground, whose velocity along x is `base_vx`): the tangent
 /// then, and the share of the hold before 0.35 in which its collider's contacts were recycled.
 fn ramp_to_break_away(
-    mut world: PhysicsWorld,
-    mut m: StickSlip,
+    world: PhysicsWorld,
+    m: StickSlip,
     b: RigidBodyHandle,
     dt: f64,
     rate: f64,
     base_vx: f32,
 ) -> (f64, f64) {
     let collider = box_collider(&world, b);
+    ramp_watching(world, m, b, collider, dt, rate, base_vx)
+}
+
+/// [`ramp_to_break_away`], with the share of the hold in which `collider`'s contacts were
+/// recycled.
+fn ramp_watching(
+    mut world: PhysicsWorld,
+    mut m: StickSlip,
+    b: RigidBodyHandle,
+    collider: ColliderHandle,
+    dt: f64,
+    rate: f64,
+    base_vx: f32,
+) -> (f64, f64) {
     let (mut recycled, mut held) = (0usize, 0usize);
     let mut tan = 0.3;
     while tan < 0.8 {
@@ -196,6 +213,64 @@ fn break_away_on_a_moving_platform(mass: f32, dt: f64, recycling: bool, rate: f6
 #[test]
 fn a_carried_contact_recycles_and_breaks_away_where_a_hooked_one_does() {
     breaks_away_as_hooked("carried box", break_away_on_a_moving_platform);
+}
+
+/// Two flat boxes of `mass` stacked on a fixed belt whose surface moves at the platform's
+/// velocity (a collider stickslip hooks at every step), all attached: the slope's tangent at
+/// which the top box starts sliding (downhill speed above 1 cm/s beyond the belt's), and the
+/// share of the hold before 0.35 in which the lower box's contacts were recycled. The belt's
+/// own pairs stay hooked; the boxes' pair between them needs no hook while it holds.
+fn break_away_stacked_on_a_belt(mass: f32, dt: f64, recycling: bool, rate: f64) -> (f64, f64) {
+    let mut world = PhysicsWorld::default();
+    world.integration_parameters.dt = dt as f32;
+    world.integration_parameters.contact_recycling = recycling;
+    let (v, half) = carried();
+    let belt = world.insert_collider(
+        cuboid3(half, 0.1, 200.0)
+            .0
+            .translation(v3(0.0, -0.1, 0.0))
+            .friction(0.8),
+        None,
+    );
+    let cube = |world: &mut PhysicsWorld, y: f32| {
+        world.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(v3(0.0, y, 0.0))
+                .linvel(v)
+                .can_sleep(false),
+            cuboid3(0.25, 0.1, 0.25)
+                .0
+                .density(mass / cuboid3(0.25, 0.1, 0.25).1)
+                .friction(MU_BA as f32),
+        )
+    };
+    // Flat boxes: the stack would tip at tan θ = 1.25, far beyond μ_ba.
+    let (_, lower) = cube(&mut world, 0.1);
+    let (top, upper) = cube(&mut world, 0.3);
+    let mut m = StickSlip::new(FrictionMaterial::new(ep()));
+    for h in [lower, upper] {
+        m.attach(&mut world.colliders, h, None);
+    }
+    // A grippier belt (μ_ba 0.65 with the box): the boxes' own contact breaks away first.
+    let grippy = Law::elasto_plastic(C, 0.8, 0.8, Curve::constant(0.6).unwrap()).unwrap();
+    m.attach(
+        &mut world.colliders,
+        belt,
+        Some(FrictionMaterial::new(grippy)),
+    );
+    m.set_surface_velocity(&mut world.colliders, belt, v);
+    // Put down on the ramp's first slope: a jump to it from level makes the top box slip
+    // faster than 1 cm/s for a step, hooked or recycled, before it holds.
+    set_slope(&mut world, 0.3);
+    for _ in 0..(0.5 / dt) as usize {
+        m.step(&mut world);
+    }
+    ramp_watching(world, m, top, lower, dt, rate, v.x)
+}
+
+#[test]
+fn boxes_stacked_on_a_belt_recycle_their_pair_and_break_away_where_hooked_ones_do() {
+    breaks_away_as_hooked("box stacked on a belt", break_away_stacked_on_a_belt);
 }
 
 /// Downhill displacement (m) over 2 s and the final acceleration (m/s²) of a box resting

@@ -77,7 +77,10 @@
 //! the tuning, or attaches it again (also in `begin_step`); the hook then steps the record
 //! `end_step` moved on, with what changed. A hooked manifold whose write changed marks its
 //! colliders (those of moving bodies when there are any, so one sliding box does not hook a
-//! whole ground), and so does a pair found not quiet after the step. Sleeping pairs are left
+//! whole ground), and so does a pair found not quiet after the step — unless one of them is
+//! hooked at every step anyway (a vibration source or a moving surface on it), whose flag
+//! alone keeps the pair hooked: the parts on a vibrating trough or a belt keep the recycling
+//! of their pairs with each other, and rest on it rather than fly. Sleeping pairs are left
 //! as they are: rapier does not update them.
 //!
 //! With `contact_recycling` off, or a pause (dt = 0), every flag stays on.
@@ -367,6 +370,13 @@ impl<H> StickSlip<H> {
         }
     }
 
+    /// Whether stickslip hooks `h` at every step: a collider with its flag and a vibration
+    /// source or a moving surface is never quiet (see `settle_after_step`).
+    fn always_hooked(&self, h: ColliderHandle) -> bool {
+        self.flagged.contains(h)
+            && (self.vibrations.get(h).is_some() || self.surfaces.get(h).is_some())
+    }
+
     /// The attached colliders of a pair whose flag keeps the pair hooked: those of moving
     /// bodies, or every attached one if none moves (both, not one: which one would depend
     /// on the order rapier gives the pair in).
@@ -378,6 +388,14 @@ impl<H> StickSlip<H> {
         c2: ColliderHandle,
     ) -> impl Iterator<Item = ColliderHandle> {
         let (a1, a2) = (self.attached.contains(c1), self.attached.contains(c2));
+        // A side that is hooked at every step (a vibration source or a moving surface on it)
+        // keeps the pair hooked alone: flagging the other would only take the recycling of
+        // that collider's other pairs (the boxes on a vibrating plate).
+        let (a1, a2) = if self.always_hooked(c1) || self.always_hooked(c2) {
+            (false, false)
+        } else {
+            (a1, a2)
+        };
         let (m1, m2) = (
             a1 && !is_still(bodies, colliders, c1, false),
             a2 && !is_still(bodies, colliders, c2, false),
@@ -528,6 +546,18 @@ impl<H> StickSlip<H> {
                 || hooked_next(c2, a2, &next)
                 || (is_still_now(c1) && is_still_now(c2))
             {
+                // A collider touching one hooked at every step (a vibrating plate, a belt)
+                // rests on it: it is not in flight.
+                for (h, other) in [(c1, c2), (c2, c1)] {
+                    if self.always_hooked(other)
+                        && pair
+                            .solver_manifolds()
+                            .iter()
+                            .any(|m| !m.data.solver_contacts.is_empty())
+                    {
+                        carried.set(h, true);
+                    }
+                }
                 continue;
             }
             let moves = |h: ColliderHandle| {
