@@ -31,6 +31,23 @@ fn impulses(c: &ContactConstraint) -> (f32, Vec3) {
     })
 }
 
+/// Whether every loaded point of the constraint ended the substep with its friction at its
+/// clamp, μ times its own normal impulse (to the kernel's saturation share).
+fn all_clamped(c: &ContactConstraint) -> bool {
+    let share = 1.0 - stickslip_core::contact::SATURATION as f32;
+    let mut loaded = c
+        .points
+        .iter()
+        .filter(|p| p.normal_part.impulse > 0.0)
+        .peekable();
+    loaded.peek().is_some()
+        && loaded.all(|p| {
+            p.tangent_part
+                .as_ref()
+                .is_some_and(|t| t.impulse.length() >= share * c.friction * p.normal_part.impulse)
+        })
+}
+
 /// Before the substeps: finds this tick's constraints of the stepped manifolds and turns
 /// each point's friction warm start from last tick's basis into this tick's, keeping it the
 /// same world impulse (less any part along the new normal).
@@ -121,7 +138,16 @@ pub(crate) fn measure(
             let (normal, friction) = impulses(c);
             // The impulse on body 2 is +λ_t: μ⃗ = −Σλ_t / Σλ_n.
             let mu = if normal > 0.0 {
-                (-friction / normal).to_array()
+                let mu = -friction / normal;
+                // avian clamps each point's friction at its own share of the limit: a solve
+                // that held every point at its clamp reached the limit, although the
+                // points' sum can fall a little short of it (a landing braked at 0.998).
+                let length = mu.length();
+                if all_clamped(c) && length > 0.0 {
+                    (mu * (c.friction / length)).to_array()
+                } else {
+                    mu.to_array()
+                }
             } else {
                 [0.0; 3]
             };
