@@ -116,6 +116,11 @@ impl ColliderBits {
             .unwrap_or(false)
     }
 
+    /// How many bits are set.
+    pub fn count(&self) -> usize {
+        self.words.iter().map(|w| w.count_ones() as usize).sum()
+    }
+
     /// The set indices, increasing.
     pub fn indices(&self) -> impl Iterator<Item = u32> + '_ {
         self.words.iter().enumerate().flat_map(|(w, &word)| {
