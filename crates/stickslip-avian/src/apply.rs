@@ -7,17 +7,19 @@
 //! law sees is the relative velocity of the touching material points, ġ = v₂ − v₁ + the
 //! manifold's tangent velocity (what the app's hooks set, plus the `SurfaceVelocity`s).
 
+use crate::dim::{self, Angular, basis, lift, local_normal, point_velocity, vector};
 use crate::key::{ContactKey, Part};
 use crate::pair_law::{PairLaws, Side, side};
 use crate::plugin::StickSlipAvianConfig;
 use crate::store::ContactStore;
-use avian3d::collision::narrow_phase::NarrowPhaseConfig;
-use avian3d::dynamics::rigid_body::sleeping::SleepTimer;
-use avian3d::prelude::*;
+use avian::collision::narrow_phase::NarrowPhaseConfig;
+use avian::dynamics::rigid_body::sleeping::SleepTimer;
+use avian::math::Vector;
+use avian::prelude::*;
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 use stickslip_bevy::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
-use stickslip_core::contact::{ContactInput, TangentBasis, step_contact};
+use stickslip_core::contact::{ContactInput, step_contact};
 use stickslip_core::law::{Coulomb, Law};
 
 /// The components of a collider stickslip reads.
@@ -53,8 +55,8 @@ pub(crate) struct World<'w, 's> {
 /// A body's motion at a contact.
 #[derive(Clone, Copy, Default)]
 struct Motion {
-    linear: Vec3,
-    angular: Vec3,
+    linear: Vector,
+    angular: Angular,
     inv_mass: f32,
 }
 
@@ -64,8 +66,8 @@ impl World<'_, '_> {
             return Motion::default();
         };
         Motion {
-            linear: v.map_or(Vec3::ZERO, |v| v.0),
-            angular: w.map_or(Vec3::ZERO, |w| w.0),
+            linear: v.map_or(Vector::ZERO, |v| v.0),
+            angular: w.map_or(Angular::default(), |w| w.0),
             inv_mass: if rb.is_dynamic() {
                 m.map_or(0.0, |m| m.inverse())
             } else {
@@ -112,7 +114,9 @@ pub(crate) fn apply(
         };
         let (marked1, friction1, vib1, surface1, of1, rot1) = c1;
         let (marked2, friction2, vib2, surface2, of2, _) = c2;
+        // The shared component is 3D; a 2D surface moves in the plane (z dropped).
         let surface = surface2.map_or(Vec3::ZERO, |s| s.0) - surface1.map_or(Vec3::ZERO, |s| s.0);
+        let surface = vector(surface.to_array());
         let source = vib1.or(vib2).map(|v| &v.0);
         let sides = (
             side(
@@ -141,7 +145,7 @@ pub(crate) fn apply(
         } else {
             laws.law(sides.0, sides.1)
         };
-        let driven = surface != Vec3::ZERO || source.is_some();
+        let driven = surface != Vector::ZERO || source.is_some();
         if law.is_none() && !driven {
             // avian's own Coulomb friction, untouched.
             continue;
@@ -166,7 +170,6 @@ pub(crate) fn apply(
             }
         };
         let manifolds = pair.manifolds.len();
-        let rotation1 = rot1.map_or(Quat::IDENTITY, |r| r.0);
         let rel = if vib1.is_some() { -1.0 } else { 1.0 };
         for (index, manifold) in pair.manifolds.iter_mut().enumerate() {
             if manifold.points.is_empty() {
@@ -176,24 +179,24 @@ pub(crate) fn apply(
             let key = ContactKey {
                 collider1: pair.collider1,
                 collider2: pair.collider2,
-                part: Part::of(manifolds, n, rotation1),
+                part: Part::of(manifolds, local_normal(rot1, n)),
             };
             let points = manifold.points.len() as f32;
             let (r1, r2) = manifold
                 .points
                 .iter()
-                .fold((Vec3::ZERO, Vec3::ZERO), |(a, b), p| {
+                .fold((Vector::ZERO, Vector::ZERO), |(a, b), p| {
                     (a + p.anchor1, b + p.anchor2)
                 });
             let (r1, r2) = (r1 / points, r2 / points);
             // avian's tangent velocity of the touching points: the app's hooks' and the
             // surfaces' (−(v₂ − v₁) they ask for).
-            let drive = manifold.tangent_velocity + surface;
+            let drive = dim::surface(manifold) + surface;
             let drive = drive - n * n.dot(drive);
-            let v1 = m1.linear + m1.angular.cross(r1);
-            let v2 = m2.linear + m2.angular.cross(r2);
-            let basis = TangentBasis::plane(n.to_array(), n.any_orthonormal_vector().to_array());
-            let slip = basis.project((v2 - v1 + drive).to_array());
+            let v1 = point_velocity(m1.linear, m1.angular, r1);
+            let v2 = point_velocity(m2.linear, m2.angular, r2);
+            let basis = basis(n);
+            let slip = basis.project(lift(v2 - v1 + drive).to_array());
             let record = store.records.entry(key).or_default();
             let warm: f32 = manifold
                 .points
@@ -224,14 +227,15 @@ pub(crate) fn apply(
             );
             record.tick = tick;
             record.slip = Vec3::from_array(basis.lift(slip));
-            record.point = manifold.points.iter().map(|p| p.point).sum::<Vec3>() / points;
-            record.normal = n;
+            record.point = lift(manifold.points.iter().map(|p| p.point).sum::<Vector>() / points);
+            record.normal = lift(n);
             manifold.friction = record.state.limit;
             if slip == [0.0, 0.0] {
                 start_inside_the_cone(manifold);
             }
             // The law's target is one for v₂ − v₁: avian's sign is the other.
-            manifold.tangent_velocity = drive - Vec3::from_array(basis.lift(out.target));
+            let target = drive - vector(basis.lift(out.target));
+            dim::set_surface(manifold, target);
             store.stepped.insert((pair.contact_id.0, index), key);
         }
     }

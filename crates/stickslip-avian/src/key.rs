@@ -28,13 +28,12 @@ pub(crate) struct ContactKey {
 }
 
 impl Part {
-    /// The part of a manifold with world normal `normal` on a pair of `manifolds` manifolds,
-    /// collider 1 turned by `rotation1`.
-    pub(crate) fn of(manifolds: usize, normal: Vec3, rotation1: Quat) -> Part {
+    /// The part of a manifold on a pair of `manifolds` manifolds, its normal `local` in
+    /// collider 1's frame.
+    pub(crate) fn of(manifolds: usize, local: Vec3) -> Part {
         if manifolds <= 1 {
             return Part::Whole;
         }
-        let local = rotation1.inverse() * normal;
         let cell = |x: f32| (x / NORMAL_CELL).round().clamp(-100.0, 100.0) as i16;
         Part::Cluster([cell(local.x), cell(local.y), cell(local.z)])
     }

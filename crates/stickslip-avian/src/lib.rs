@@ -88,7 +88,15 @@
 //! separated pair leaves no state after the tick it is gone in.
 #![warn(missing_docs)]
 
+// One source for both dimensions (the package stickslip-avian2d builds it with cfg `dim2`),
+// as avian builds avian2d and avian3d.
+#[cfg(dim2)]
+extern crate avian2d as avian;
+#[cfg(not(dim2))]
+extern crate avian3d as avian;
+
 mod apply;
+mod dim;
 mod key;
 mod measure;
 mod pair_law;

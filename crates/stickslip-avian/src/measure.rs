@@ -13,23 +13,15 @@
 //! Carried over as the world impulse it was (as rapier keeps it), the warm start holds the
 //! contact still.
 
+use crate::dim::{friction_impulse, impulses};
 use crate::store::{ContactStore, Measured, Solved, TickForces, TickImpulses};
-use avian3d::dynamics::solver::constraint_graph::ConstraintGraph;
-use avian3d::dynamics::solver::contact::ContactConstraint;
-use avian3d::prelude::*;
+use avian::dynamics::solver::constraint_graph::ConstraintGraph;
+use avian::dynamics::solver::contact::ContactConstraint;
+use avian::prelude::*;
 use bevy::prelude::*;
 use stickslip_bevy::{ContactReport, RegimeChanged, StickSlipContacts};
 use stickslip_core::contact::REGIME_NONE;
 use stickslip_core::law::Regime;
-
-/// The constraint's normal impulse and friction impulse on body 2 (world) as they stand.
-fn impulses(c: &ContactConstraint) -> (f32, Vec3) {
-    let t2 = c.tangent1.cross(c.normal);
-    c.points.iter().fold((0.0, Vec3::ZERO), |(n, t), p| {
-        let lt = p.tangent_part.as_ref().map_or(Vec2::ZERO, |t| t.impulse);
-        (n + p.normal_part.impulse, t + lt.x * c.tangent1 + lt.y * t2)
-    })
-}
 
 /// Whether every loaded point of the constraint ended the substep with its friction at its
 /// clamp, μ times its own normal impulse (to the kernel's saturation share).
@@ -42,9 +34,8 @@ fn all_clamped(c: &ContactConstraint) -> bool {
         .peekable();
     loaded.peek().is_some()
         && loaded.all(|p| {
-            p.tangent_part
-                .as_ref()
-                .is_some_and(|t| t.impulse.length() >= share * c.friction * p.normal_part.impulse)
+            p.tangent_part.is_some()
+                && friction_impulse(p) >= share * c.friction * p.normal_part.impulse
         })
 }
 
@@ -65,27 +56,37 @@ pub(crate) fn carry_warm_start(
             let Some(&key) = store.stepped.get(&(c.contact_id.0, c.manifold_index)) else {
                 continue;
             };
-            let Some(record) = store.records.get(&key) else {
+            if !store.records.contains_key(&key) {
                 continue;
-            };
+            }
             store.solved.push(Solved {
                 color,
                 index,
                 key,
                 impulses: TickImpulses::default(),
             });
-            let Some((t1_old, n_old)) = record.basis else {
-                continue;
-            };
-            let t2_old = t1_old.cross(n_old);
-            let (t1, n) = (c.tangent1, c.normal);
-            let t2 = t1.cross(n);
-            for part in c.points.iter_mut().filter_map(|p| p.tangent_part.as_mut()) {
-                let w = part.impulse.x * t1_old + part.impulse.y * t2_old;
-                let w = w - n * n.dot(w);
-                part.impulse = Vec2::new(w.dot(t1), w.dot(t2));
+            // In 2D the friction direction is the normal's perpendicular and the warm start
+            // one number along it: nothing turns.
+            #[cfg(not(dim2))]
+            if let Some(old) = store.records.get(&key).and_then(|r| r.basis) {
+                turn_warm_start(c, old);
             }
         }
+    }
+}
+
+/// Turns the constraint's friction warm start from the basis `(t1_old, n_old)` it was
+/// accumulated in into the constraint's own, as the same world impulse (less its part along
+/// the new normal).
+#[cfg(not(dim2))]
+fn turn_warm_start(c: &mut ContactConstraint, (t1_old, n_old): (Vec3, Vec3)) {
+    let t2_old = t1_old.cross(n_old);
+    let (t1, n) = (c.tangent1, c.normal);
+    let t2 = t1.cross(n);
+    for part in c.points.iter_mut().filter_map(|p| p.tangent_part.as_mut()) {
+        let w = part.impulse.x * t1_old + part.impulse.y * t2_old;
+        let w = w - n * n.dot(w);
+        part.impulse = Vec2::new(w.dot(t1), w.dot(t2));
     }
 }
 
@@ -163,7 +164,10 @@ pub(crate) fn measure(
                 normal_force: tick_normal.max(0.0) as f64 / dt,
                 friction: s.impulses.friction / dt as f32,
             };
-            record.basis = Some((c.tangent1, c.normal));
+            #[cfg(not(dim2))]
+            {
+                record.basis = Some((c.tangent1, c.normal));
+            }
         }
     }
     let tick = store.tick;

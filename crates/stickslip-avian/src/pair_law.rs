@@ -11,7 +11,7 @@
 //!   plain Coulomb friction at the combined break-away coefficient, with a warning, as in
 //!   stickslip-rapier.
 
-use avian3d::prelude::{CoefficientCombine, Friction};
+use avian::prelude::{CoefficientCombine, Friction};
 use bevy::platform::collections::HashMap;
 use bevy::prelude::*;
 use stickslip_bevy::StickSlipFriction;

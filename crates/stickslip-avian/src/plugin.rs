@@ -4,10 +4,10 @@ use crate::apply::apply;
 use crate::measure::{accumulate, carry_warm_start, measure};
 use crate::pair_law::PairLaws;
 use crate::store::ContactStore;
-use avian3d::collision::narrow_phase::NarrowPhaseSystems;
-use avian3d::dynamics::solver::islands::WakeBody;
-use avian3d::dynamics::solver::schedule::{SolverSystems, SubstepSchedule, SubstepSolverSystems};
-use avian3d::prelude::*;
+use avian::collision::narrow_phase::NarrowPhaseSystems;
+use avian::dynamics::solver::islands::WakeBody;
+use avian::dynamics::solver::schedule::{SolverSystems, SubstepSchedule, SubstepSolverSystems};
+use avian::prelude::*;
 use bevy::prelude::*;
 use stickslip_bevy::{
     RegimeChanged, StickSlipContacts, StickSlipFriction, StickSlipVibration, SurfaceVelocity,

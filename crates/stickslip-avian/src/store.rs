@@ -58,7 +58,8 @@ pub(crate) struct Record {
     /// The tick's forces, for the read-back.
     pub tick_forces: TickForces,
     /// The solver's friction basis of the last solve (`tangent1`, normal), in which avian
-    /// keeps the warm start (see `measure::carry_warm_start`).
+    /// keeps the warm start (see `measure::carry_warm_start`; 3D only).
+    #[cfg(not(dim2))]
     pub basis: Option<(Vec3, Vec3)>,
     /// The tick it was last stepped in.
     pub tick: u64,
@@ -77,6 +78,7 @@ impl Default for Record {
             state: ContactState::default(),
             measured: Measured::default(),
             tick_forces: TickForces::default(),
+            #[cfg(not(dim2))]
             basis: None,
             tick: 0,
             slip: Vec3::ZERO,

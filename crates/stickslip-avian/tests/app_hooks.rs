@@ -14,12 +14,12 @@
 
 mod common;
 
-use avian3d::prelude::*;
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
+use common::avian::prelude::*;
+use common::stickslip_avian::StickSlipContacts;
 use common::*;
 use std::collections::HashSet;
-use stickslip_avian::StickSlipContacts;
 
 const MU_K: f32 = 0.4;
 const MU_S: f32 = 0.6;
@@ -92,7 +92,7 @@ impl CollisionHooks for PlatformHooks<'_, '_> {
                 }
             });
         }
-        let up = rotation.0 * Vec3::Y;
+        let up = up_of(rotation);
         let on_top = contacts.manifolds.iter().all(|m| {
             let n = m.normal * sign;
             n.length() > f32::EPSILON && n.dot(up) >= 0.5
@@ -136,7 +136,7 @@ fn one_way_platform(stickslip: bool, material: Friction) -> Platform {
         .world_mut()
         .spawn((
             RigidBody::Static,
-            Collider::cuboid(8.0, 0.2, 8.0),
+            cuboid_collider(8.0, 0.2, 8.0),
             Transform::from_xyz(0.0, PLATFORM_TOP - 0.1, 0.0),
             OneWayPlatform::default(),
             ActiveCollisionHooks::MODIFY_CONTACTS,
@@ -146,7 +146,7 @@ fn one_way_platform(stickslip: bool, material: Friction) -> Platform {
     let b = block(
         &mut app,
         0.0,
-        (material, LinearVelocity(Vec3::new(0.0, 9.0, 0.0))),
+        (material, linear_velocity(Vec3::new(0.0, 9.0, 0.0))),
     );
     let mut out = Platform {
         apex: 0.0,
@@ -240,7 +240,7 @@ fn through_sensors(sensors: bool) -> (Vec<Vec3>, usize, usize) {
             app.world_mut()
                 .spawn((
                     RigidBody::Static,
-                    Collider::cuboid(1.0, 1.0, 2.0),
+                    cuboid_collider(1.0, 1.0, 2.0),
                     Transform::from_xyz(1.0, 0.4, 0.0),
                     Sensor,
                     friction(),
@@ -251,9 +251,9 @@ fn through_sensors(sensors: bool) -> (Vec<Vec3>, usize, usize) {
             app.world_mut()
                 .spawn((
                     RigidBody::Kinematic,
-                    Collider::sphere(0.4),
+                    ball_collider(0.4),
                     Transform::from_xyz(0.0, 0.3, 0.0),
-                    LinearVelocity(Vec3::new(1.0, 0.0, 0.0)),
+                    linear_velocity(Vec3::new(1.0, 0.0, 0.0)),
                     Sensor,
                     friction(),
                 ))
@@ -400,7 +400,7 @@ fn pendulum(stickslip: bool) -> (Vec<f32>, f64, f32) {
         .world_mut()
         .spawn((
             RigidBody::Dynamic,
-            Collider::cuboid(0.5, 0.5, 0.5),
+            cuboid_collider(0.5, 0.5, 0.5),
             Mass(1.0),
             Transform::from_translation(anchor_at + 2.0 * Vec3::new(phi0.sin(), -phi0.cos(), 0.0))
                 .with_rotation(Quat::from_rotation_z(phi0)),
@@ -409,7 +409,7 @@ fn pendulum(stickslip: bool) -> (Vec<f32>, f64, f32) {
         ))
         .id();
     app.world_mut()
-        .spawn(RevoluteJoint::new(anchor, bob).with_local_anchor2(Vec3::Y * 2.0));
+        .spawn(RevoluteJoint::new(anchor, bob).with_local_anchor2(v(0.0, 2.0, 0.0)));
     let x0 = position(&app, resting).x as f64;
     let angle = |app: &App| {
         let r = rotation(app, bob);

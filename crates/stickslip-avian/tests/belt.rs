@@ -7,10 +7,10 @@
 
 mod common;
 
-use avian3d::prelude::*;
 use bevy::prelude::*;
+use common::avian::prelude::*;
+use common::stickslip_avian::{FrictionMaterial, StickSlipFriction, SurfaceVelocity};
 use common::*;
-use stickslip_avian::{FrictionMaterial, StickSlipFriction, SurfaceVelocity};
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 
@@ -82,7 +82,7 @@ fn a_floor_that_starts_moving_wakes_what_sleeps_on_it() {
         .world_mut()
         .spawn((
             RigidBody::Dynamic,
-            Collider::cuboid(0.5, 0.5, 0.5),
+            cuboid_collider(0.5, 0.5, 0.5),
             Mass(1.0),
             Transform::from_xyz(0.0, 0.25, 0.0),
             friction,

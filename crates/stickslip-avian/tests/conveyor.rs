@@ -12,10 +12,10 @@
 
 mod common;
 
-use avian3d::prelude::*;
 use bevy::prelude::*;
+use common::avian::prelude::*;
+use common::stickslip_avian::{FrictionMaterial, StickSlipFriction, StickSlipVibration};
 use common::*;
-use stickslip_avian::{FrictionMaterial, StickSlipFriction, StickSlipVibration};
 use stickslip_core::contact::{Amplitude, VibrationDirection, VibrationMode, VibrationSource};
 use stickslip_core::law::Law;
 use stickslip_core::popov;

@@ -13,12 +13,12 @@
 
 mod common;
 
-use avian3d::prelude::*;
 use bevy::prelude::*;
-use common::*;
-use stickslip_avian::{
+use common::avian::prelude::*;
+use common::stickslip_avian::{
     FrictionMaterial, RegimeChanged, StickSlipContacts, StickSlipFriction, core::law::Regime,
 };
+use common::*;
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 
@@ -61,7 +61,7 @@ fn hold_from(
         .world_mut()
         .spawn((
             RigidBody::Dynamic,
-            Collider::cuboid(0.4, 0.4, 0.4),
+            cuboid_collider(0.4, 0.4, 0.4),
             Mass(MASS),
             Transform::from_xyz(0.0, 0.2, 0.0),
             SleepingDisabled,
@@ -166,13 +166,13 @@ fn the_read_back_gives_the_friction_of_the_whole_tick() {
     const SLED: f32 = 3000.0;
     const DRAG: f32 = 0.01;
     for substeps in [2, 6, 12] {
-        let mut app = app_at(true, HZ, substeps, Gravity(Vec3::new(0.0, -G as f32, 0.0)));
+        let mut app = app_at(true, HZ, substeps, gravity(Vec3::new(0.0, -G as f32, 0.0)));
         floor(&mut app, StickSlipFriction(None));
         let sled = app
             .world_mut()
             .spawn((
                 RigidBody::Dynamic,
-                Collider::cuboid(1.0, 0.2, 1.0),
+                cuboid_collider(1.0, 0.2, 1.0),
                 Mass(SLED),
                 Transform::from_xyz(0.0, 0.1, 0.0),
                 SleepingDisabled,

@@ -9,9 +9,9 @@
 
 mod common;
 
-use avian3d::prelude::*;
+use common::avian::prelude::*;
+use common::stickslip_avian::{FrictionMaterial, StickSlipFriction};
 use common::*;
-use stickslip_avian::{FrictionMaterial, StickSlipFriction};
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 

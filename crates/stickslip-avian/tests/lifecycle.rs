@@ -6,10 +6,10 @@
 
 mod common;
 
-use avian3d::prelude::*;
 use bevy::prelude::*;
+use common::avian::prelude::*;
+use common::stickslip_avian::{ContactStore, StickSlipFriction};
 use common::*;
-use stickslip_avian::{ContactStore, StickSlipFriction};
 
 fn states(app: &App) -> usize {
     app.world().resource::<ContactStore>().len()

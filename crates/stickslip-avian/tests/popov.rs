@@ -10,10 +10,11 @@
 
 mod common;
 
-use avian3d::prelude::*;
 use bevy::prelude::*;
+use common::stickslip_avian::{
+    FrictionMaterial, StickSlipContacts, StickSlipFriction, StickSlipVibration,
+};
 use common::*;
-use stickslip_avian::{FrictionMaterial, StickSlipContacts, StickSlipFriction, StickSlipVibration};
 use stickslip_core::contact::{Amplitude, VibrationDirection, VibrationMode, VibrationSource};
 use stickslip_core::law::Law;
 use stickslip_core::popov;
@@ -33,7 +34,7 @@ const TICKS_PER_PERIOD: usize = 40;
 fn drag(w: &Waveform, beta: f64) -> (f64, f64) {
     let hz = FREQUENCY * TICKS_PER_PERIOD as f64;
     let dt = 1.0 / hz;
-    let mut app = app_at(true, hz, 6, Gravity(Vec3::ZERO));
+    let mut app = app_at(true, hz, 6, gravity(Vec3::ZERO));
     let law = Law::elasto_plastic(C, MU0, MU0, Curve::constant(MU0).unwrap()).unwrap();
     let material = StickSlipFriction(Some(FrictionMaterial::new(law)));
     let source = VibrationSource::new(

@@ -11,11 +11,11 @@
 
 mod common;
 
-use avian3d::prelude::*;
 use bevy::prelude::*;
+use common::avian::prelude::*;
+use common::stickslip_avian::{FrictionMaterial, StickSlipFriction};
 use common::*;
 use std::f32::consts::FRAC_PI_2;
-use stickslip_avian::{FrictionMaterial, StickSlipFriction};
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
 

@@ -18,10 +18,10 @@
 
 mod common;
 
-use avian3d::prelude::*;
 use bevy::prelude::*;
+use common::avian::prelude::*;
+use common::stickslip_avian::StickSlipFriction;
 use common::*;
-use stickslip_avian::StickSlipFriction;
 
 /// The friction of a run: avian's `Friction` on the floor and every body, or the plugin's
 /// default elasto-plastic material.
@@ -212,7 +212,7 @@ fn dominoes(setup: (&str, bool, Material), theta: f64) -> (Vec<f32>, Option<f64>
     let omega = Vec3::new(0.0, 0.0, -w);
     app.world_mut()
         .entity_mut(row[0])
-        .insert((AngularVelocity(omega), LinearVelocity(omega.cross(r))));
+        .insert((angular_velocity(omega), linear_velocity(omega.cross(r))));
     let mut last_fell = None;
     for tick in 1..=300 {
         app.update();

@@ -11,10 +11,10 @@
 
 mod common;
 
-use avian3d::prelude::*;
 use bevy::prelude::*;
+use common::avian::prelude::*;
+use common::stickslip_avian::{FrictionMaterial, StickSlipContacts, StickSlipFriction};
 use common::*;
-use stickslip_avian::{FrictionMaterial, StickSlipContacts, StickSlipFriction};
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::{Curve, SlidingCurve, StribeckDecay};
 
@@ -39,7 +39,7 @@ fn law() -> Law {
 /// over 1 s after the contact has slid 25 elastic ranges (and at least 0.5 s); with `plain`,
 /// plain avian friction of that coefficient instead (read-back NaN).
 fn dragged(v: f64, substeps: u32, plain: Option<f32>) -> (f64, f64) {
-    let mut app = app_at(plain.is_none(), HZ, substeps, Gravity(Vec3::ZERO));
+    let mut app = app_at(plain.is_none(), HZ, substeps, gravity(Vec3::ZERO));
     let mu_max = curve().at_rest();
     let mass = mu_max * F * DT / (0.01 * v);
     let material = StickSlipFriction(Some(FrictionMaterial::new(law())));

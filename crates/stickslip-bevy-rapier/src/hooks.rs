@@ -1,13 +1,11 @@
 //! The rapier hooks of a bracketed step: the app's own `BevyPhysicsHooks` first on the pairs
 //! the app flagged, then stickslip (the surface velocities, then its law on its pairs).
 
-use bevy_rapier3d::pipeline::{ContactModificationContextView, PairFilterContextView};
-use bevy_rapier3d::prelude::BevyPhysicsHooks;
-use bevy_rapier3d::rapier::geometry::SolverFlags;
-use bevy_rapier3d::rapier::pipeline::{
-    ContactModificationContext, PairFilterContext, PhysicsHooks,
-};
-use stickslip_rapier_035::StickSlip;
+use bevy_rapier::pipeline::{ContactModificationContextView, PairFilterContextView};
+use bevy_rapier::prelude::BevyPhysicsHooks;
+use bevy_rapier::rapier::geometry::SolverFlags;
+use bevy_rapier::rapier::pipeline::{ContactModificationContext, PairFilterContext, PhysicsHooks};
+use stickslip_rapier::StickSlip;
 
 /// The app's hooks as rapier hooks. Which pairs they see is stickslip's to decide (the
 /// modifier owns whose hook flag is whose, see `StickSlip::modify_solver_contacts_with`);

@@ -42,6 +42,17 @@
 
 #![warn(missing_docs)]
 
+// One source for both dimensions (the package stickslip-bevy-rapier2d builds it with cfg
+// `dim2`), as rapier builds rapier2d and rapier3d.
+#[cfg(dim2)]
+extern crate bevy_rapier2d as bevy_rapier;
+#[cfg(not(dim2))]
+extern crate bevy_rapier3d as bevy_rapier;
+#[cfg(dim2)]
+extern crate stickslip_rapier2d_035 as stickslip_rapier;
+#[cfg(not(dim2))]
+extern crate stickslip_rapier_035 as stickslip_rapier;
+
 mod hooks;
 pub mod prelude;
 #[cfg(feature = "scenario")]
@@ -71,10 +82,10 @@ use bevy::ecs::intern::Interned;
 use bevy::ecs::schedule::{ScheduleCleanupPolicy, ScheduleLabel};
 use bevy::ecs::system::SystemParamItem;
 use bevy::prelude::*;
-use bevy_rapier3d::plugin::systems::step_simulation;
-use bevy_rapier3d::prelude::*;
+use bevy_rapier::plugin::systems::step_simulation;
+use bevy_rapier::prelude::*;
 use std::marker::PhantomData;
-use stickslip_rapier_035::StickSlip;
+use stickslip_rapier::StickSlip;
 
 /// Adds stickslip to a bevy_rapier app (see the crate docs). `H` is the app's
 /// `BevyPhysicsHooks` type, the one of its `RapierPhysicsPlugin::<H>` (`()` is bevy_rapier's
@@ -167,7 +178,7 @@ where
         // it removes the colliders.
         .add_systems(
             PostUpdate,
-            sync::removals.before(bevy_rapier3d::plugin::systems::sync_removals),
+            sync::removals.before(bevy_rapier::plugin::systems::sync_removals),
         );
 
         // bevy_rapier's step system is replaced at startup, when every plugin is built
@@ -182,7 +193,7 @@ where
     /// The contact gizmos draw what is read back: with them, contacts are read back.
     #[cfg(feature = "debug")]
     fn finish(&self, app: &mut App) {
-        use stickslip_rapier_035::ReadBack;
+        use stickslip_rapier::ReadBack;
         if app.is_plugin_added::<debug::StickSlipDebugPlugin>()
             && let Some(mut state) = app.world_mut().get_resource_mut::<StickSlipRapier>()
             && state.modifier.read_back() != ReadBack::Contacts

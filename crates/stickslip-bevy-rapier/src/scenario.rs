@@ -28,11 +28,11 @@
 use crate::state::StickSlipRapier;
 use bevy::ecs::schedule::{InternedScheduleLabel, ScheduleLabel};
 use bevy::prelude::*;
-use bevy_rapier3d::plugin::context::{
+use bevy_rapier::plugin::context::{
     DefaultRapierContext, RapierContextColliders, RapierContextSimulation, RapierRigidBodySet,
 };
-use bevy_rapier3d::prelude::*;
-use bevy_rapier3d::rapier::dynamics::{CoefficientCombineRule as RapierRule, RigidBodyHandle};
+use bevy_rapier::prelude::*;
+use bevy_rapier::rapier::dynamics::{CoefficientCombineRule as RapierRule, RigidBodyHandle};
 use stickslip_bevy::{StickSlipFriction, StickSlipVibration};
 use stickslip_scenario_035::spec::{BodyKind, ColliderSpec};
 use stickslip_scenario_035::{Driver, apply_drivers};

@@ -2,11 +2,11 @@
 //! each rapier step (contacts as entities, regime changes).
 
 use bevy::prelude::*;
-use bevy_rapier3d::rapier::geometry::{ColliderHandle, ColliderSet};
+use bevy_rapier::rapier::geometry::{ColliderHandle, ColliderSet};
 use std::collections::HashMap;
 use stickslip_bevy::{RegimeChanged, StickSlipContacts};
 use stickslip_core::law::Regime;
-use stickslip_rapier_035::StickSlip;
+use stickslip_rapier::StickSlip;
 
 /// The modifier of the app's default rapier context.
 #[derive(Resource)]
@@ -87,6 +87,9 @@ pub(crate) fn publish_reports(
         let (Some(entity1), Some(entity2)) = (entity(r.collider1), entity(r.collider2)) else {
             continue;
         };
+        // In 2D, the plane's contacts in the shared 3D read-back type (z = 0).
+        #[cfg(dim2)]
+        let r = r.in_3d();
         contacts.0.push(r.with_colliders(entity1, entity2));
         if now.contains_key(&(entity1, entity2)) {
             continue;

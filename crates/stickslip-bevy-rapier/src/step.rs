@@ -7,11 +7,11 @@ use crate::hooks::{StepHooks, UserHooks};
 use crate::state::{LastRegimes, StickSlipRapier, publish_reports};
 use bevy::ecs::system::{StaticSystemParam, SystemParam, SystemParamItem};
 use bevy::prelude::*;
-use bevy_rapier3d::plugin::context::{
+use bevy_rapier::plugin::context::{
     DefaultRapierContext, RapierContextColliders, RapierContextJoints, RapierContextSimulation,
     RapierRigidBodySet, SimulationToRenderTime,
 };
-use bevy_rapier3d::prelude::*;
+use bevy_rapier::prelude::*;
 use stickslip_bevy::{RegimeChanged, StickSlipContacts};
 
 /// The rapier steps of one frame, exactly as bevy_rapier 0.36's `step_simulation` runs them.

@@ -15,9 +15,9 @@
 
 use crate::state::StickSlipRapier;
 use bevy::prelude::*;
-use bevy_rapier3d::plugin::context::{DefaultRapierContext, RapierContextColliders};
-use bevy_rapier3d::prelude::*;
-use bevy_rapier3d::rapier::geometry::{ColliderHandle, ColliderSet};
+use bevy_rapier::plugin::context::{DefaultRapierContext, RapierContextColliders};
+use bevy_rapier::prelude::*;
+use bevy_rapier::rapier::geometry::{ColliderHandle, ColliderSet};
 use stickslip_bevy::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
 
 /// Whether a collider lives in the default context (the one stickslip brackets).
@@ -135,7 +135,12 @@ pub(crate) fn sync_surfaces(
     let colliders = &mut colliders.bypass_change_detection().colliders;
     for (entity, v, h, hooks, link) in &changed {
         if in_default(link, default) {
-            state.modifier.set_surface_velocity(colliders, h.0, v.0);
+            // The shared component is 3D; a 2D surface moves in the plane (z dropped).
+            #[cfg(dim2)]
+            let v = v.0.truncate();
+            #[cfg(not(dim2))]
+            let v = v.0;
+            state.modifier.set_surface_velocity(colliders, h.0, v);
             state.surface_entities.insert(entity, h.0);
             declare_app_flag(state, colliders, h.0, hooks);
         }

@@ -9,14 +9,17 @@
 //! coefficient). A stickslip plugin whose hooks type differs from bevy_rapier's is refused at
 //! startup (stickslip off, rapier's own friction); despawning leaves no stickslip state.
 
+mod common;
+
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
-use bevy_rapier3d::prelude::*;
+use common::bevy_rapier::prelude::*;
+use common::stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin};
+use common::stickslip_rapier::FrictionMaterial;
+use common::*;
 use std::time::Duration;
-use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin};
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
-use stickslip_rapier_035::FrictionMaterial;
 
 const C: f64 = 1e5;
 const MU_BA: f64 = 0.5;
@@ -40,14 +43,14 @@ fn app(mode: TimestepMode, tan: f64, mu_k: f64) -> (App, Entity) {
         .add_plugins(StickSlipRapierPlugin::new(material(mu_k)));
     app.update();
     let th = tan.atan();
-    let g = Vec3::new((9.81 * th.sin()) as f32, -(9.81 * th.cos()) as f32, 0.0);
+    let g = vect((9.81 * th.sin()) as f32, -(9.81 * th.cos()) as f32, 0.0);
     let mut q = app.world_mut().query::<&mut RapierConfiguration>();
     for mut c in q.iter_mut(app.world_mut()) {
         c.gravity = g;
     }
     app.world_mut().spawn((
         RigidBody::Fixed,
-        Collider::cuboid(50.0, 0.1, 5.0),
+        cuboid(50.0, 0.1, 5.0),
         Transform::from_xyz(0.0, -0.1, 0.0),
         StickSlipFriction(None),
     ));
@@ -55,7 +58,7 @@ fn app(mode: TimestepMode, tan: f64, mu_k: f64) -> (App, Entity) {
         .world_mut()
         .spawn((
             RigidBody::Dynamic,
-            Collider::cuboid(0.1, 0.1, 0.1),
+            cuboid(0.1, 0.1, 0.1),
             ColliderMassProperties::Density(1000.0),
             LockedAxes::ROTATION_LOCKED,
             Velocity::zero(),

@@ -11,15 +11,18 @@
 //! off while it recycles a quiet collider — and a flag the app adds is the app's, on every
 //! step); removing stickslip's components turns off only stickslip's flags.
 
+mod common;
+
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
-use bevy_rapier3d::plugin::context::RapierContextColliders;
-use bevy_rapier3d::prelude::*;
-use std::collections::BTreeSet;
-use std::sync::Mutex;
-use stickslip_bevy_rapier::{
+use common::bevy_rapier::plugin::context::RapierContextColliders;
+use common::bevy_rapier::prelude::*;
+use common::stickslip_bevy_rapier::{
     StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin, SurfaceVelocity,
 };
+use common::*;
+use std::collections::BTreeSet;
+use std::sync::Mutex;
 
 #[derive(Component)]
 struct OneWay;
@@ -47,7 +50,7 @@ impl BevyPhysicsHooks for MyHooks<'_, '_> {
         if self.belts.contains(e1) || self.belts.contains(e2) {
             let v = if self.belts.contains(e1) { 0.5 } else { -0.5 };
             for c in context.raw.solver_contacts.iter_mut() {
-                c.tangent_velocity = Vec3::new(v, 0.0, 0.0);
+                c.tangent_velocity = vect(v, 0.0, 0.0);
             }
         }
     }
@@ -69,14 +72,14 @@ fn the_apps_own_hooks_work_beside_stickslip() {
     // stickslip's ground and box, far from the rest.
     world.spawn((
         RigidBody::Fixed,
-        Collider::cuboid(2.0, 0.1, 2.0),
+        cuboid(2.0, 0.1, 2.0),
         Transform::from_xyz(-20.0, -0.1, 0.0),
         StickSlipFriction(None),
     ));
     let held = world
         .spawn((
             RigidBody::Dynamic,
-            Collider::cuboid(0.2, 0.2, 0.2),
+            cuboid(0.2, 0.2, 0.2),
             Transform::from_xyz(-20.0, 0.2, 0.0),
             StickSlipFriction(None),
         ))
@@ -84,7 +87,7 @@ fn the_apps_own_hooks_work_beside_stickslip() {
     // The user's one-way platform (top at y = 1) and a ball thrown up from below it.
     world.spawn((
         RigidBody::Fixed,
-        Collider::cuboid(2.0, 0.1, 2.0),
+        cuboid(2.0, 0.1, 2.0),
         Transform::from_xyz(0.0, 0.9, 0.0),
         OneWay,
         hooks,
@@ -94,23 +97,23 @@ fn the_apps_own_hooks_work_beside_stickslip() {
             RigidBody::Dynamic,
             Collider::ball(0.1),
             Transform::from_xyz(0.0, 0.3, 0.0),
-            Velocity::linear(Vec3::new(0.0, 6.0, 0.0)),
+            Velocity::linear(vect(0.0, 6.0, 0.0)),
         ))
         .id();
-    // The user's conveyor belt and a box on it.
+    // The user's conveyor belt and a box on it (apart along x: the same scene in 2D).
     world.spawn((
         RigidBody::Fixed,
-        Collider::cuboid(20.0, 0.1, 1.0),
-        Transform::from_xyz(0.0, -0.1, 10.0),
+        cuboid(20.0, 0.1, 1.0),
+        Transform::from_xyz(40.0, -0.1, 0.0),
         Belt,
         hooks,
     ));
     let carried = world
         .spawn((
             RigidBody::Dynamic,
-            Collider::cuboid(0.1, 0.1, 0.1),
+            cuboid(0.1, 0.1, 0.1),
             LockedAxes::ROTATION_LOCKED,
-            Transform::from_xyz(0.0, 0.1, 10.0),
+            Transform::from_xyz(40.0, 0.1, 0.0),
             Velocity::zero(),
         ))
         .id();
@@ -175,7 +178,7 @@ fn four_grounds(app: &mut App) -> ([Entity; 4], [Entity; 4]) {
         world
             .spawn((
                 RigidBody::Fixed,
-                Collider::cuboid(1.0, 0.1, 1.0),
+                cuboid(1.0, 0.1, 1.0),
                 Transform::from_xyz(x, -0.1, 0.0),
             ))
             .id()
@@ -188,12 +191,12 @@ fn four_grounds(app: &mut App) -> ([Entity; 4], [Entity; 4]) {
         .insert((flag, StickSlipFriction(None)));
     world
         .entity_mut(grounds[3])
-        .insert(SurfaceVelocity(Vec3::new(0.0, 0.0, 0.3)));
+        .insert(SurfaceVelocity(Vec3::new(0.3, 0.0, 0.0)));
     let boxes = [-10.0, 0.0, 10.0, 20.0].map(|x| {
         world
             .spawn((
                 RigidBody::Dynamic,
-                Collider::cuboid(0.1, 0.1, 0.1),
+                cuboid(0.1, 0.1, 0.1),
                 Transform::from_xyz(x, 0.1, 0.0),
                 // A sleeping box's pair is not hooked at all.
                 Sleeping::disabled(),
@@ -242,7 +245,7 @@ fn rapier_flag(app: &mut App, e: Entity) -> bool {
     let colliders = q.single(app.world()).unwrap();
     colliders.colliders[h]
         .active_hooks()
-        .contains(bevy_rapier3d::rapier::pipeline::ActiveHooks::MODIFY_SOLVER_CONTACTS)
+        .contains(common::bevy_rapier::rapier::pipeline::ActiveHooks::MODIFY_SOLVER_CONTACTS)
 }
 
 #[test]

@@ -95,6 +95,28 @@ impl<C, const D: usize> ContactReport<C, D> {
     }
 }
 
+impl<C> ContactReport<C, 2> {
+    /// The 2D report in 3D's arrays, z = 0 (the plane's contacts in the one read-back type
+    /// of the bevy add-ons).
+    pub fn in_3d(self) -> ContactReport<C, 3> {
+        let lift = |[x, y]: [f32; 2]| [x, y, 0.0];
+        ContactReport {
+            collider1: self.collider1,
+            collider2: self.collider2,
+            point: lift(self.point),
+            normal: lift(self.normal),
+            regime: self.regime,
+            mu: self.mu,
+            limit: self.limit,
+            normal_force: self.normal_force,
+            friction_force: lift(self.friction_force),
+            slip_velocity: lift(self.slip_velocity),
+            dissipated_power: self.dissipated_power,
+            reset: self.reset,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -109,5 +131,17 @@ mod tests {
         let named = r.with_colliders("a", "b");
         assert_eq!((named.collider1, named.collider2), ("a", "b"));
         assert_eq!(named.effective_mu(), r.effective_mu());
+    }
+
+    #[test]
+    fn a_2d_report_in_3d_keeps_its_numbers_in_the_plane() {
+        let mut r = ContactReport::<u32, 2>::new(1, 2);
+        r.normal_force = 10.0;
+        r.friction_force = [-3.0, 4.0];
+        r.normal = [0.0, 1.0];
+        let lifted = r.in_3d();
+        assert_eq!(lifted.friction_force, [-3.0, 4.0, 0.0]);
+        assert_eq!(lifted.normal, [0.0, 1.0, 0.0]);
+        assert_eq!(lifted.effective_mu(), r.effective_mu());
     }
 }

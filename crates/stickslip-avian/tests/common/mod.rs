@@ -1,13 +1,80 @@
 //! Headless avian apps for the tests: `MinimalPlugins`, avian's `PhysicsPlugins` in its
 //! default schedule (`FixedPostUpdate`) at 60 Hz, one physics tick per `app.update()`.
+//!
+//! The same tests run in 2D (stickslip-avian2d links some of them, cfg `dim2`): the helpers
+//! take and give 3D vectors (z dropped and z = 0 in 2D) and make the 2D shapes of the 3D
+//! ones (a cuboid's x-y rectangle).
 #![allow(dead_code)]
 
-use avian3d::prelude::*;
+#[cfg(not(dim2))]
+pub use ::stickslip_avian;
+#[cfg(dim2)]
+pub use avian2d as avian;
+#[cfg(not(dim2))]
+pub use avian3d as avian;
+#[cfg(dim2)]
+pub use stickslip_avian2d as stickslip_avian;
+
+use avian::math::Vector;
+use avian::prelude::*;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy::transform::TransformPlugin;
 use std::time::Duration;
 use stickslip_avian::StickSlipAvianPlugin;
+
+/// avian's vector from 3D components (2D: z dropped).
+pub fn v(x: f32, y: f32, z: f32) -> Vector {
+    #[cfg(not(dim2))]
+    {
+        Vec3::new(x, y, z)
+    }
+    #[cfg(dim2)]
+    {
+        let _ = z;
+        Vec2::new(x, y)
+    }
+}
+
+/// avian's vector in 3D (2D: z = 0).
+pub fn lift(v: Vector) -> Vec3 {
+    #[cfg(not(dim2))]
+    {
+        v
+    }
+    #[cfg(dim2)]
+    {
+        v.extend(0.0)
+    }
+}
+
+/// A cuboid collider of full lengths x, y, z (2D: the x-y rectangle).
+pub fn cuboid_collider(x: f32, y: f32, z: f32) -> Collider {
+    #[cfg(not(dim2))]
+    {
+        Collider::cuboid(x, y, z)
+    }
+    #[cfg(dim2)]
+    {
+        let _ = z;
+        Collider::rectangle(x, y)
+    }
+}
+
+/// A constant force (N, 3D components; 2D: z dropped).
+pub fn constant_force(f: Vec3) -> ConstantForce {
+    ConstantForce(v(f.x, f.y, f.z))
+}
+
+/// Gravity (3D components; 2D: z dropped).
+pub fn gravity(g: Vec3) -> Gravity {
+    Gravity(v(g.x, g.y, g.z))
+}
+
+/// A linear velocity (3D components; 2D: z dropped).
+pub fn linear_velocity(l: Vec3) -> LinearVelocity {
+    LinearVelocity(v(l.x, l.y, l.z))
+}
 
 /// The physics rate (Hz).
 pub const HZ: f64 = 60.0;
@@ -46,7 +113,7 @@ pub fn floor(app: &mut App, extra: impl Bundle) -> Entity {
     app.world_mut()
         .spawn((
             RigidBody::Static,
-            Collider::cuboid(400.0, 0.2, 20.0),
+            cuboid_collider(400.0, 0.2, 20.0),
             Transform::from_xyz(0.0, -0.1, 0.0),
             extra,
         ))
@@ -58,7 +125,7 @@ pub fn block(app: &mut App, x: f32, extra: impl Bundle) -> Entity {
     app.world_mut()
         .spawn((
             RigidBody::Dynamic,
-            Collider::cuboid(0.5, 0.5, 0.5),
+            cuboid_collider(0.5, 0.5, 0.5),
             Mass(1.0),
             Transform::from_xyz(x, 0.25, 0.0),
             SleepingDisabled,
@@ -76,19 +143,21 @@ pub fn run(app: &mut App, n: usize) {
 
 /// The body's position.
 pub fn position(app: &App, e: Entity) -> Vec3 {
-    app.world().get::<Position>(e).map_or(Vec3::NAN, |p| p.0)
+    app.world()
+        .get::<Position>(e)
+        .map_or(Vec3::NAN, |p| lift(p.0))
 }
 
 /// The body's linear velocity.
 pub fn velocity(app: &App, e: Entity) -> Vec3 {
     app.world()
         .get::<LinearVelocity>(e)
-        .map_or(Vec3::NAN, |v| v.0)
+        .map_or(Vec3::NAN, |v| lift(v.0))
 }
 
 /// Gravity tilted by `theta` about z (a slope of angle θ under a level floor).
 pub fn tilted_gravity(theta: f64) -> Gravity {
-    Gravity(Vec3::new(
+    gravity(Vec3::new(
         (G * theta.sin()) as f32,
         -(G * theta.cos()) as f32,
         0.0,
@@ -134,7 +203,7 @@ pub fn cuboid(app: &mut App, at: Vec3, size: Vec3, extra: impl Bundle) -> Entity
     app.world_mut()
         .spawn((
             RigidBody::Dynamic,
-            Collider::cuboid(size.x, size.y, size.z),
+            cuboid_collider(size.x, size.y, size.z),
             Transform::from_translation(at),
             SleepingDisabled,
             extra,
@@ -142,9 +211,16 @@ pub fn cuboid(app: &mut App, at: Vec3, size: Vec3, extra: impl Bundle) -> Entity
         .id()
 }
 
-/// The body's rotation.
+/// The body's rotation (2D: about z).
 pub fn rotation(app: &App, e: Entity) -> Quat {
-    app.world().get::<Rotation>(e).map_or(Quat::NAN, |r| r.0)
+    #[cfg(not(dim2))]
+    let q = app.world().get::<Rotation>(e).map_or(Quat::NAN, |r| r.0);
+    #[cfg(dim2)]
+    let q = app
+        .world()
+        .get::<Rotation>(e)
+        .map_or(Quat::NAN, |r| Quat::from_rotation_z(r.as_radians()));
+    q
 }
 
 /// A sled of `mass` kg (1 m × 0.2 m × 1 m, rotation locked, never sleeping) on the floor,
@@ -153,12 +229,12 @@ pub fn sled(app: &mut App, mass: f64, press: f64, extra: impl Bundle) -> Entity 
     app.world_mut()
         .spawn((
             RigidBody::Dynamic,
-            Collider::cuboid(0.5, 0.1, 0.5),
+            cuboid_collider(0.5, 0.1, 0.5),
             Mass(mass as f32),
             Transform::from_xyz(0.0, 0.05, 0.0),
             LockedAxes::ROTATION_LOCKED,
             SleepingDisabled,
-            ConstantForce(Vec3::new(0.0, -press as f32, 0.0)),
+            constant_force(Vec3::new(0.0, -press as f32, 0.0)),
             extra,
         ))
         .id()
@@ -170,6 +246,42 @@ pub fn drag_tick(app: &mut App, e: Entity, v: f64) {
     let vy = velocity(app, e).y;
     app.world_mut()
         .entity_mut(e)
-        .insert(LinearVelocity(Vec3::new(v as f32, vy, 0.0)));
+        .insert(linear_velocity(Vec3::new(v as f32, vy, 0.0)));
     app.update();
+}
+
+/// An angular velocity (3D components; 2D: the rate about z).
+pub fn angular_velocity(w: Vec3) -> AngularVelocity {
+    #[cfg(not(dim2))]
+    {
+        AngularVelocity(w)
+    }
+    #[cfg(dim2)]
+    {
+        AngularVelocity(w.z)
+    }
+}
+
+/// A ball collider (2D: a disc).
+pub fn ball_collider(radius: f32) -> Collider {
+    #[cfg(not(dim2))]
+    {
+        Collider::sphere(radius)
+    }
+    #[cfg(dim2)]
+    {
+        Collider::circle(radius)
+    }
+}
+
+/// The body's local y axis in the world.
+pub fn up_of(rotation: &Rotation) -> Vector {
+    #[cfg(not(dim2))]
+    {
+        rotation.0 * Vec3::Y
+    }
+    #[cfg(dim2)]
+    {
+        *rotation * Vec2::Y
+    }
 }

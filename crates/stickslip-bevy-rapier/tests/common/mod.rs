@@ -1,14 +1,30 @@
 //! Shared setup of the headless bevy_rapier tests (not a test itself).
+//!
+//! Some tests run in 2D too (stickslip-bevy-rapier2d links them, cfg `dim2`): the helpers
+//! below make bevy_rapier's vectors and shapes from 3D components (z dropped in 2D).
 #![allow(dead_code)]
+
+#[cfg(not(dim2))]
+pub use ::stickslip_bevy_rapier;
+#[cfg(dim2)]
+pub use bevy_rapier2d as bevy_rapier;
+#[cfg(not(dim2))]
+pub use bevy_rapier3d as bevy_rapier;
+#[cfg(dim2)]
+pub use stickslip_bevy_rapier2d as stickslip_bevy_rapier;
+#[cfg(not(dim2))]
+pub use stickslip_rapier_035 as stickslip_rapier;
+#[cfg(dim2)]
+pub use stickslip_rapier2d_035 as stickslip_rapier;
 
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
-use bevy_rapier3d::prelude::*;
+use bevy_rapier::prelude::*;
 use std::time::Duration;
 use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin};
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
-use stickslip_rapier_035::FrictionMaterial;
+use stickslip_rapier::FrictionMaterial;
 
 /// A headless bevy_rapier app with stickslip, in `mode`, each update `frame` seconds of
 /// render time (what Variable and Interpolated step by).
@@ -44,7 +60,7 @@ pub fn ep(c: f64, mu_ba: f64, mu_k: f64) -> FrictionMaterial {
 /// (downhill is +x).
 pub fn incline(app: &mut App, tan: f64) {
     let theta = tan.atan();
-    let g = Vec3::new(
+    let g = vect(
         (9.81 * theta.sin()) as f32,
         -(9.81 * theta.cos()) as f32,
         0.0,
@@ -60,7 +76,7 @@ pub fn ground(app: &mut App, law: FrictionMaterial) -> Entity {
     app.world_mut()
         .spawn((
             RigidBody::Fixed,
-            Collider::cuboid(50.0, 0.1, 5.0),
+            cuboid(50.0, 0.1, 5.0),
             Transform::default(),
             StickSlipFriction(Some(law)),
         ))
@@ -73,7 +89,7 @@ pub fn part(app: &mut App, x: f32, law: FrictionMaterial) -> Entity {
     app.world_mut()
         .spawn((
             RigidBody::Dynamic,
-            Collider::cuboid(0.1, 0.1, 0.1),
+            cuboid(0.1, 0.1, 0.1),
             ColliderMassProperties::Mass(8.0),
             LockedAxes::ROTATION_LOCKED,
             Velocity::zero(),
@@ -93,4 +109,30 @@ pub fn x_v(app: &App, e: Entity) -> (f64, f64) {
     let t = app.world().get::<Transform>(e).unwrap().translation.x as f64;
     let v = app.world().get::<Velocity>(e).unwrap().linear.x as f64;
     (t, v)
+}
+
+/// bevy_rapier's vector from 3D components (2D: z dropped).
+pub fn vect(x: f32, y: f32, z: f32) -> Vect {
+    #[cfg(not(dim2))]
+    {
+        Vec3::new(x, y, z)
+    }
+    #[cfg(dim2)]
+    {
+        let _ = z;
+        Vec2::new(x, y)
+    }
+}
+
+/// A cuboid of half-extents x, y, z (2D: the x-y rectangle).
+pub fn cuboid(x: f32, y: f32, z: f32) -> Collider {
+    #[cfg(not(dim2))]
+    {
+        Collider::cuboid(x, y, z)
+    }
+    #[cfg(dim2)]
+    {
+        let _ = z;
+        Collider::cuboid(x, y)
+    }
 }

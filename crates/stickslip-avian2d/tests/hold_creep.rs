@@ -1,0 +1,1 @@
+../../stickslip-avian/tests/hold_creep.rs

@@ -1,0 +1,1 @@
+../../stickslip-avian/tests/incline.rs

@@ -1,0 +1,1 @@
+../../stickslip-bevy-rapier/tests/friction_layer.rs

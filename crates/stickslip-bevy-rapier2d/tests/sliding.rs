@@ -1,0 +1,1 @@
+../../stickslip-bevy-rapier/tests/sliding.rs
