@@ -4,7 +4,8 @@
 # window to OUT; `view` opens scenarios/incline.toml the same way (saved beside OUT as
 # *_view.png); `bevy_elliptical_drive` likewise (*_drive.png). The avian app (crate stickslip-avian):
 # `avian_conveyor` after 120 frames (4 s: its vibrating trough's parts are past their start-up
-# transient), saved as *_avian.png. Each picture is checked not to be blank.
+# transient), saved as *_avian.png. The 2D app (crate stickslip-bevy-rapier2d): `incline_laws_2d`
+# after 90 frames, saved as *_incline_2d.png. Each picture is checked not to be blank.
 #   bash scripts/bevy_screenshot.sh [OUT] [FRAMES]
 # Installs what it needs from Debian's packages (xvfb, Mesa's Vulkan driver) when missing.
 set -euo pipefail
@@ -23,13 +24,14 @@ fi
 # In the test profile and the selection of scripts/test.sh, which has built them already.
 cargo build --workspace --profile test --features "$STICKSLIP_FEATURES" \
     --example vibrating_conveyor --example view --example bevy_elliptical_drive \
-    --example avian_conveyor
+    --example avian_conveyor --example incline_laws_2d
 export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
 chmod 700 "$XDG_RUNTIME_DIR"
 VIEW_OUT="${OUT%.png}_view.png"
 RAPIER_OUT="${OUT%.png}_drive.png"
 AVIAN_OUT="${OUT%.png}_avian.png"
-rm -f "$OUT" "$VIEW_OUT" "$RAPIER_OUT" "$AVIAN_OUT"
+INCLINE_2D_OUT="${OUT%.png}_incline_2d.png"
+rm -f "$OUT" "$VIEW_OUT" "$RAPIER_OUT" "$AVIAN_OUT" "$INCLINE_2D_OUT"
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
     "$CARGO_TARGET_DIR/debug/examples/vibrating_conveyor" --screenshot "$OUT" --frames "$FRAMES"
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
@@ -40,9 +42,12 @@ timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
     --frames "$FRAMES"
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
     "$CARGO_TARGET_DIR/debug/examples/avian_conveyor" --screenshot "$AVIAN_OUT" --frames 120
+# The 2D one (bevy_rapier2d): three friction laws on an incline, side view.
+timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" \
+    "$CARGO_TARGET_DIR/debug/examples/incline_laws_2d" --screenshot "$INCLINE_2D_OUT" --frames 90
 
 # Not blank: a PNG whose pixels vary (decoded with the standard library only).
-for png in "$OUT" "$VIEW_OUT" "$RAPIER_OUT" "$AVIAN_OUT"; do
+for png in "$OUT" "$VIEW_OUT" "$RAPIER_OUT" "$AVIAN_OUT" "$INCLINE_2D_OUT"; do
 python3 - "$png" <<'PY'
 import struct, sys, zlib
 data = open(sys.argv[1], "rb").read()

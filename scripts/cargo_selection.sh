@@ -17,7 +17,7 @@
 # unstable in cargo 1.95.
 
 # Features of the default selection.
-STICKSLIP_FEATURES="stickslip-bevy-rapier/window,stickslip-bevy-rapier/scenario,stickslip-bevy-rapier/debug,stickslip-avian/window,stickslip-avian/debug"
+STICKSLIP_FEATURES="stickslip-bevy-rapier/window,stickslip-bevy-rapier/scenario,stickslip-bevy-rapier/debug,stickslip-avian/window,stickslip-avian/debug,stickslip-bevy-rapier2d/window,stickslip-bevy-rapier2d/debug,stickslip-avian2d/window,stickslip-avian2d/debug"
 # The same with rapier's multi-threaded narrow phase and solver in the 3D and 2D adapters.
 STICKSLIP_PARALLEL_FEATURES="$STICKSLIP_FEATURES,stickslip/parallel,stickslip-fixtures/parallel,stickslip-fixtures2d/parallel,stickslip-rapier2d/parallel"
 export STICKSLIP_FEATURES STICKSLIP_PARALLEL_FEATURES
