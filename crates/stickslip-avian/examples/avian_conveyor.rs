@@ -38,7 +38,7 @@
 use avian3d::prelude::*;
 use bevy::prelude::*;
 use stickslip_avian::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
-use stickslip_avian::window::{Hud, caption, command_line, hud_box, time_keys};
+use stickslip_avian::window::{Hud, WindowedApp, caption, command_line, hud_box, time_keys};
 use stickslip_avian::{
     FrictionMaterial, StickSlipAvianPlugin, StickSlipContacts, StickSlipFriction,
     StickSlipVibration, VibrationSource,
@@ -85,21 +85,15 @@ fn main() -> AppExit {
         return AppExit::error();
     };
     let mut app = App::new();
-    app.add_plugins(DefaultPlugins.set(WindowPlugin {
-        primary_window: Some(Window {
-            title: "stickslip in avian: static friction and a vibrating conveyor".into(),
-            resolution: (1280, 720).into(),
-            ..default()
-        }),
-        ..default()
-    }))
+    app.add_plugins(WindowedApp::new(
+        "stickslip in avian: static friction and a vibrating conveyor",
+    ))
     .add_plugins((
         PhysicsPlugins::default(),
         StickSlipAvianPlugin::default(),
         StickSlipDebugPlugin,
     ))
     .insert_resource(Time::<Fixed>::from_hz(PHYSICS_HZ))
-    .insert_resource(ClearColor(Color::srgb(0.09, 0.1, 0.12)))
     .insert_resource(Theory::compute())
     .add_systems(Startup, (setup, spawn_parts).chain())
     .add_systems(
@@ -138,12 +132,7 @@ impl Theory {
         let theta = SLOPE.atan();
         // μ0 (1 − α Ψ(β*)) = tan θ, β* = c v*/(μ0 α f).
         let target = (1.0 - SLOPE as f64 / MU0) / ALPHA;
-        let g = |beta: f64| popov::psi(&Waveform::Sine, beta).unwrap_or(f64::NAN) - target;
-        let mut conv = roots::SimpleConvergency {
-            eps: 1e-12,
-            max_iter: 200,
-        };
-        let beta = roots::find_root_brent(1e-6, 100.0, g, &mut conv).unwrap_or(f64::NAN);
+        let beta = popov::beta_at_psi(&Waveform::Sine, target).unwrap_or(f64::NAN);
         Theory {
             slide: G * (theta.sin() - MU_K * theta.cos()),
             popov: beta * MU0 * ALPHA * F_POPOV / C,

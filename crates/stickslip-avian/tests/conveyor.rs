@@ -30,12 +30,7 @@ const F: f64 = 20_000.0;
 /// Popov's conveying speed on slope `tan`: Ψ_w(β*) = (1 − tan θ/μ0)/α, v* = β* μ0 α f / c.
 fn theory_speed(tan: f64) -> f64 {
     let target = (1.0 - tan / MU0) / ALPHA;
-    let g = |beta: f64| popov::psi(&Waveform::Sine, beta).unwrap() - target;
-    let mut conv = roots::SimpleConvergency {
-        eps: 1e-12,
-        max_iter: 200,
-    };
-    let beta = roots::find_root_brent(1e-6, 100.0, g, &mut conv).unwrap();
+    let beta = popov::beta_at_psi(&Waveform::Sine, target).unwrap();
     beta * MU0 * ALPHA * F / C
 }
 

@@ -20,7 +20,7 @@
 
 use bevy::prelude::*;
 use bevy_rapier3d::prelude::*;
-use stickslip_bevy_rapier::window::{Hud, command_line, hud_box, time_keys};
+use stickslip_bevy_rapier::window::{Hud, WindowedApp, command_line, hud_box, time_keys};
 use stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapierPlugin, StickSlipVibration};
 use stickslip_core::law::Law;
 use stickslip_core::popov::{CompliantContact, Oscillation, free_drive_velocity};
@@ -112,31 +112,23 @@ fn main() -> AppExit {
         return AppExit::error();
     };
     let mut app = App::new();
-    app.add_plugins(DefaultPlugins.set(WindowPlugin {
-        primary_window: Some(Window {
-            title: "stickslip: elliptical vibration drive".into(),
-            resolution: (1280, 720).into(),
-            ..default()
-        }),
-        ..default()
-    }))
-    // bevy_rapier in the fixed schedule, one rapier step per tick, stickslip bracketing it.
-    .insert_resource(TimestepMode::Fixed {
-        dt: 1.0 / 240.0,
-        substeps: 1,
-    })
-    .add_plugins(RapierPhysicsPlugin::<NoUserData>::default().in_fixed_schedule())
-    .add_plugins(StickSlipRapierPlugin::default().in_fixed_schedule())
-    .insert_resource(Time::<Fixed>::from_hz(240.0))
-    .insert_resource(ClearColor(Color::srgb(0.09, 0.1, 0.12)))
-    .insert_resource(Drive {
-        flipped: false,
-        theory: [source(SHIFTS[0]).1, source(SHIFTS[1]).1],
-        speed: [0.0; 2],
-    })
-    .add_systems(Startup, setup)
-    .add_systems(FixedUpdate, (measure, wrap).after(PhysicsSet::Writeback))
-    .add_systems(Update, (keys, time_keys, hud));
+    app.add_plugins(WindowedApp::new("stickslip: elliptical vibration drive"))
+        // bevy_rapier in the fixed schedule, one rapier step per tick, stickslip bracketing it.
+        .insert_resource(TimestepMode::Fixed {
+            dt: 1.0 / 240.0,
+            substeps: 1,
+        })
+        .add_plugins(RapierPhysicsPlugin::<NoUserData>::default().in_fixed_schedule())
+        .add_plugins(StickSlipRapierPlugin::default().in_fixed_schedule())
+        .insert_resource(Time::<Fixed>::from_hz(240.0))
+        .insert_resource(Drive {
+            flipped: false,
+            theory: [source(SHIFTS[0]).1, source(SHIFTS[1]).1],
+            speed: [0.0; 2],
+        })
+        .add_systems(Startup, setup)
+        .add_systems(FixedUpdate, (measure, wrap).after(PhysicsSet::Writeback))
+        .add_systems(Update, (keys, time_keys, hud));
     if let Some(shot) = shot {
         // Reproducible pictures: the window at a given frame, every frame 1/30 s.
         app.add_plugins(shot);

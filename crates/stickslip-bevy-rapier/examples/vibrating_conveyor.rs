@@ -42,7 +42,7 @@ use bevy_rapier3d::plugin::RapierTransformPropagateSet;
 use bevy_rapier3d::prelude::*;
 use std::f32::consts::FRAC_PI_6;
 use stickslip_bevy_rapier::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
-use stickslip_bevy_rapier::window::{Hud, caption, command_line, hud_box, time_keys};
+use stickslip_bevy_rapier::window::{Hud, WindowedApp, caption, command_line, hud_box, time_keys};
 use stickslip_bevy_rapier::{
     StickSlipContacts, StickSlipFriction, StickSlipRapier, StickSlipRapierPlugin,
     StickSlipVibration,
@@ -98,52 +98,44 @@ fn main() -> AppExit {
         return AppExit::error();
     };
     let mut app = App::new();
-    app.add_plugins(DefaultPlugins.set(WindowPlugin {
-        primary_window: Some(Window {
-            title: "stickslip: vibrating conveyor".into(),
-            resolution: (1280, 720).into(),
-            ..default()
-        }),
-        ..default()
-    }))
-    // bevy_rapier in the fixed schedule, one rapier step per tick; stickslip beside it.
-    .insert_resource(TimestepMode::Fixed {
-        dt: (1.0 / PHYSICS_HZ) as f32,
-        substeps: 1,
-    })
-    .add_plugins(RapierPhysicsPlugin::<NoUserData>::default().in_fixed_schedule())
-    .add_plugins(StickSlipRapierPlugin::default().in_fixed_schedule())
-    .add_plugins(StickSlipDebugPlugin)
-    .insert_resource(Time::<Fixed>::from_hz(PHYSICS_HZ))
-    .insert_resource(ClearColor(Color::srgb(0.09, 0.1, 0.12)))
-    .insert_resource(Theory::compute())
-    .add_systems(Startup, (setup, spawn_parts).chain())
-    // Before the step (bevy_rapier's in FixedPostUpdate): the trough's target, restarts.
-    .add_systems(FixedUpdate, (drive_feeder, restart_parts))
-    // bevy_rapier 0.36 propagates transforms itself before each fixed step, but without
-    // bevy's `mark_dirty_trees`: a body with children (the trough and its walls) then has a
-    // GlobalTransform, hence a kinematic target, updated once per frame, not per step — at
-    // 100 steps a frame the trough would jerk once per frame and the parts hop at 0.12 m/s
-    // instead of 0.146.
-    .add_systems(
-        FixedPostUpdate,
-        mark_dirty_trees.before(RapierTransformPropagateSet),
-    )
-    .add_systems(
-        FixedPostUpdate,
-        (tally_regimes, measure).after(PhysicsSet::Writeback),
-    )
-    .add_systems(
-        Update,
-        (
-            keys,
-            time_keys,
-            colour_parts,
-            hud,
-            place_labels,
-            vibration_cue,
-        ),
-    );
+    app.add_plugins(WindowedApp::new("stickslip: vibrating conveyor"))
+        // bevy_rapier in the fixed schedule, one rapier step per tick; stickslip beside it.
+        .insert_resource(TimestepMode::Fixed {
+            dt: (1.0 / PHYSICS_HZ) as f32,
+            substeps: 1,
+        })
+        .add_plugins(RapierPhysicsPlugin::<NoUserData>::default().in_fixed_schedule())
+        .add_plugins(StickSlipRapierPlugin::default().in_fixed_schedule())
+        .add_plugins(StickSlipDebugPlugin)
+        .insert_resource(Time::<Fixed>::from_hz(PHYSICS_HZ))
+        .insert_resource(Theory::compute())
+        .add_systems(Startup, (setup, spawn_parts).chain())
+        // Before the step (bevy_rapier's in FixedPostUpdate): the trough's target, restarts.
+        .add_systems(FixedUpdate, (drive_feeder, restart_parts))
+        // bevy_rapier 0.36 propagates transforms itself before each fixed step, but without
+        // bevy's `mark_dirty_trees`: a body with children (the trough and its walls) then has a
+        // GlobalTransform, hence a kinematic target, updated once per frame, not per step — at
+        // 100 steps a frame the trough would jerk once per frame and the parts hop at 0.12 m/s
+        // instead of 0.146.
+        .add_systems(
+            FixedPostUpdate,
+            mark_dirty_trees.before(RapierTransformPropagateSet),
+        )
+        .add_systems(
+            FixedPostUpdate,
+            (tally_regimes, measure).after(PhysicsSet::Writeback),
+        )
+        .add_systems(
+            Update,
+            (
+                keys,
+                time_keys,
+                colour_parts,
+                hud,
+                place_labels,
+                vibration_cue,
+            ),
+        );
     if let Some(shot) = shot {
         // Reproducible pictures: the window at a given frame, every frame 1/30 s.
         app.add_plugins(shot);
@@ -165,12 +157,7 @@ impl Theory {
     fn compute() -> Theory {
         // μ0 (1 − α Ψ(β*)) = tan θ, β* = c v*/(μ0 α f).
         let target = (1.0 - SLOPE / MU0) / ALPHA;
-        let g = |beta: f64| popov::psi(&Waveform::Sine, beta).unwrap_or(f64::NAN) - target;
-        let mut conv = roots::SimpleConvergency {
-            eps: 1e-12,
-            max_iter: 200,
-        };
-        let beta = roots::find_root_brent(1e-6, 100.0, g, &mut conv).unwrap_or(f64::NAN);
+        let beta = popov::beta_at_psi(&Waveform::Sine, target).unwrap_or(f64::NAN);
         let (a, f, throw) = FEEDER;
         let feeder = VibratoryFeeder::new(a as f64, f as f64, throw as f64, MU0, 9.81)
             .expect("valid feeder");

@@ -36,12 +36,11 @@ use stickslip_bevy_rapier::scenario::{
     DriverAction, LoadedScenario, Scenario, StickSlipScenarioPlugin, despawn_scenario,
     spawn_scenario,
 };
-use stickslip_bevy_rapier::window::{Hud, command_line, hud_box, time_keys};
+use stickslip_bevy_rapier::window::{
+    Hud, WINDOW_SIZE, WindowedApp, command_line, hud_box, time_keys,
+};
 use stickslip_bevy_rapier::{StickSlipContacts, StickSlipRapier, StickSlipRapierPlugin};
 use stickslip_core::law::Regime;
-
-/// The window's size (px).
-const WINDOW: (u32, u32) = (1280, 720);
 
 fn main() -> AppExit {
     // Without a file: the built-in scenario of `stickslip run`.
@@ -59,38 +58,30 @@ fn main() -> AppExit {
         }
     };
     let mut app = App::new();
-    app.add_plugins(DefaultPlugins.set(WindowPlugin {
-        primary_window: Some(Window {
-            title: format!("stickslip: {}", scenario.name),
-            resolution: WINDOW.into(),
-            ..default()
-        }),
-        ..default()
-    }))
-    // bevy_rapier in the fixed schedule (its timestep set to the scenario's dt on load),
-    // stickslip beside it, the contact gizmos, the scenario's drivers.
-    .add_plugins(RapierPhysicsPlugin::<NoUserData>::default().in_fixed_schedule())
-    .add_plugins((
-        StickSlipRapierPlugin::default().in_fixed_schedule(),
-        StickSlipDebugPlugin,
-        StickSlipScenarioPlugin::new(FixedUpdate),
-    ))
-    .insert_resource(ClearColor(Color::srgb(0.09, 0.1, 0.12)))
-    .insert_resource(source)
-    .insert_resource(Current(scenario))
-    .add_systems(Startup, (setup, load).chain())
-    .add_systems(
-        Update,
-        (
-            keys,
-            time_keys,
-            add_meshes,
-            colour_bodies,
-            draw_springs,
-            hud,
-        )
-            .chain(),
-    );
+    app.add_plugins(WindowedApp::new(format!("stickslip: {}", scenario.name)))
+        // bevy_rapier in the fixed schedule (its timestep set to the scenario's dt on load),
+        // stickslip beside it, the contact gizmos, the scenario's drivers.
+        .add_plugins(RapierPhysicsPlugin::<NoUserData>::default().in_fixed_schedule())
+        .add_plugins((
+            StickSlipRapierPlugin::default().in_fixed_schedule(),
+            StickSlipDebugPlugin,
+            StickSlipScenarioPlugin::new(FixedUpdate),
+        ))
+        .insert_resource(source)
+        .insert_resource(Current(scenario))
+        .add_systems(Startup, (setup, load).chain())
+        .add_systems(
+            Update,
+            (
+                keys,
+                time_keys,
+                add_meshes,
+                colour_bodies,
+                draw_springs,
+                hud,
+            )
+                .chain(),
+        );
     if let Some(shot) = shot {
         // Reproducible pictures: the window at a given frame, every frame 1/30 s.
         app.add_plugins(shot);
@@ -173,7 +164,7 @@ fn load(world: &mut World) {
     }
     let loaded = world.resource::<LoadedScenario>();
     let fov = PerspectiveProjection::default().fov;
-    let camera = loaded.framing(fov, WINDOW.0 as f32 / WINDOW.1 as f32);
+    let camera = loaded.framing(fov, WINDOW_SIZE.0 as f32 / WINDOW_SIZE.1 as f32);
     let size = (loaded.region.1 - loaded.region.0).length();
     let weight = loaded.max_weight();
     let mut cameras = world.query_filtered::<&mut Transform, With<Camera3d>>();

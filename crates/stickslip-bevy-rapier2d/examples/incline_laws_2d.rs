@@ -27,7 +27,7 @@ use bevy::camera::ScalingMode;
 use bevy::prelude::*;
 use bevy_rapier2d::prelude::*;
 use stickslip_bevy_rapier2d::debug::{StickSlipDebugPlugin, regime_color};
-use stickslip_bevy_rapier2d::window::{Hud, command_line, hud_box, time_keys};
+use stickslip_bevy_rapier2d::window::{Hud, WindowedApp, command_line, hud_box, time_keys};
 use stickslip_bevy_rapier2d::{
     FrictionMaterial, StickSlipContacts, StickSlipFriction, StickSlipRapierPlugin,
     StickSlipVibration,
@@ -69,14 +69,9 @@ fn main() -> AppExit {
         return AppExit::error();
     };
     let mut app = App::new();
-    app.add_plugins(DefaultPlugins.set(WindowPlugin {
-        primary_window: Some(Window {
-            title: "stickslip: three friction laws on an incline (2D)".into(),
-            resolution: (1280, 720).into(),
-            ..default()
-        }),
-        ..default()
-    }))
+    app.add_plugins(WindowedApp::new(
+        "stickslip: three friction laws on an incline (2D)",
+    ))
     .insert_resource(TimestepMode::Fixed {
         dt: (1.0 / PHYSICS_HZ) as f32,
         substeps: 1,
@@ -85,7 +80,6 @@ fn main() -> AppExit {
     .add_plugins(StickSlipRapierPlugin::default().in_fixed_schedule())
     .add_plugins(StickSlipDebugPlugin)
     .insert_resource(Time::<Fixed>::from_hz(PHYSICS_HZ))
-    .insert_resource(ClearColor(Color::srgb(0.09, 0.1, 0.12)))
     .add_systems(Startup, setup)
     .add_systems(FixedUpdate, restart)
     .add_systems(Update, (time_keys, reset_key, colour, hud));
@@ -129,12 +123,7 @@ fn elasto_plastic(mu_k: f64) -> FrictionMaterial {
 /// Popov's speed of lane 3: μ0 (1 − α Ψ(β*)) = tan θ, β* = c v*/(μ0 α f).
 fn popov_speed() -> f64 {
     let target = (1.0 - SLOPE as f64 / MU_BA) / ALPHA;
-    let g = |beta: f64| popov::psi(&Waveform::Sine, beta).unwrap_or(f64::NAN) - target;
-    let mut conv = roots::SimpleConvergency {
-        eps: 1e-12,
-        max_iter: 200,
-    };
-    let beta = roots::find_root_brent(1e-6, 100.0, g, &mut conv).unwrap_or(f64::NAN);
+    let beta = popov::beta_at_psi(&Waveform::Sine, target).unwrap_or(f64::NAN);
     beta * MU_BA * ALPHA * FREQUENCY / C
 }
 

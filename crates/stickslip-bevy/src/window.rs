@@ -9,6 +9,40 @@ use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured, save_to_dis
 use bevy::time::TimeUpdateStrategy;
 use std::time::Duration;
 
+/// The size of every windowed app's window (px): CI's screenshots are taken at it.
+pub const WINDOW_SIZE: (u32, u32) = (1280, 720);
+
+/// bevy's default plugins with the primary window of stickslip's windowed apps (`title`,
+/// [`WINDOW_SIZE`]) and their dark background.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct WindowedApp {
+    /// The window's title.
+    pub title: String,
+}
+
+impl WindowedApp {
+    /// The windowed app titled `title`.
+    pub fn new(title: impl Into<String>) -> Self {
+        WindowedApp {
+            title: title.into(),
+        }
+    }
+}
+
+impl Plugin for WindowedApp {
+    fn build(&self, app: &mut App) {
+        app.add_plugins(DefaultPlugins.set(WindowPlugin {
+            primary_window: Some(Window {
+                title: self.title.clone(),
+                resolution: WINDOW_SIZE.into(),
+                ..default()
+            }),
+            ..default()
+        }))
+        .insert_resource(ClearColor(Color::srgb(0.09, 0.1, 0.12)));
+    }
+}
+
 /// Frames after the requested one by which a screenshot that never arrived ends the run.
 const PATIENCE: u32 = 300;
 

@@ -30,4 +30,6 @@ pub use compliant::{
 };
 pub use drive::{DrivePoint, blocking_force, drive_curve, free_drive_velocity};
 pub use oscillation::{Excitation, Oscillation};
-pub use psi::{StickEvent, psi, psi_closed_form, psi_sine_eq37, psi_sine_eq38, stick_events};
+pub use psi::{
+    StickEvent, beta_at_psi, psi, psi_closed_form, psi_sine_eq37, psi_sine_eq38, stick_events,
+};

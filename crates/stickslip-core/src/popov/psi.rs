@@ -45,6 +45,33 @@ pub fn psi(waveform: &Waveform, beta: f64) -> Result<f64, ParamError> {
     Ok(if sum > 0.0 { sum } else { 0.0 })
 }
 
+/// The dimensionless speed β at which Ψ_w(β) has fallen to `target` (0 < target ≤ 1), searched
+/// upwards from β = 0 (the first crossing). It is where the mean sliding friction under normal
+/// vibration, μ0 (1 − α Ψ_w(β)) (Eq. 33), equals a given level: a part on a slope tan θ
+/// between μ0 (1 − α) and μ0 flows down it at v = β μ0 α f / c (f the frequency, c the
+/// contact's stiffness per unit normal force) with Ψ_w(β) = (1 − tan θ/μ0)/α. A target Ψ never
+/// falls to within [`MAX_BETA`] (a left sawtooth's 2/(2 + β) far below 1e-9) is
+/// [`ParamError::NoConvergence`].
+pub fn beta_at_psi(waveform: &Waveform, target: f64) -> Result<f64, ParamError> {
+    positive("target", target)?;
+    in_range("target", target, 0.0, 1.0)?;
+    let f = |beta: f64| psi(waveform, beta).unwrap_or(0.0) - target;
+    // Doubling brackets: the first where Ψ has fallen to the target.
+    let (mut lo, mut hi) = (0.0, 1.0);
+    let mut doublings = 0;
+    while f(hi) > 0.0 {
+        if hi >= MAX_BETA {
+            return Err(ParamError::NoConvergence {
+                name: "beta_at_psi doublings",
+                limit: doublings,
+            });
+        }
+        (lo, hi) = (hi, (2.0 * hi).min(MAX_BETA));
+        doublings += 1;
+    }
+    Ok(bracketed_root(f, lo, hi))
+}
+
 /// The largest dimensionless velocity β [`psi`] accepts (far past every waveform's β_c, where
 /// Ψ = 0).
 pub const MAX_BETA: f64 = 1e9;
@@ -384,5 +411,33 @@ mod tests {
         let i = |b| psi_closed_form(&imp, b).unwrap();
         assert!((i(100.0 - 1e-9) - i(100.0 + 1e-9)).abs() < 1e-9);
         assert!((psi_sine_eq37(0.0) - 1.0).abs() < 1e-15 && psi_sine_eq38(TAU) == 0.0);
+    }
+
+    #[test]
+    fn beta_at_psi_inverts_psi() {
+        // Closed forms: right sawtooth Ψ = 1 − β/2, left sawtooth Ψ = 2/(2 + β).
+        for t in [0.05, 0.2, 0.5, 0.9, 1.0] {
+            let right = beta_at_psi(&Waveform::SawtoothRight, t).unwrap();
+            assert!((right - 2.0 * (1.0 - t)).abs() < 1e-9, "{t}: {right}");
+            let left = beta_at_psi(&Waveform::SawtoothLeft, t).unwrap();
+            assert!(
+                (left - (2.0 / t - 2.0)).abs() < 1e-9 * (1.0 + left),
+                "{t}: {left}"
+            );
+            for w in [Waveform::Sine, Waveform::Square] {
+                let beta = beta_at_psi(&w, t).unwrap();
+                assert!(
+                    (psi(&w, beta).unwrap() - t).abs() < 1e-9,
+                    "{w:?} {t}: {beta}"
+                );
+            }
+        }
+        for bad in [0.0, -0.1, 1.5, f64::NAN] {
+            assert!(beta_at_psi(&Waveform::Sine, bad).is_err(), "{bad}");
+        }
+        assert!(matches!(
+            beta_at_psi(&Waveform::SawtoothLeft, 1e-12),
+            Err(ParamError::NoConvergence { .. })
+        ));
     }
 }
