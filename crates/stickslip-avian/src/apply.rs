@@ -20,7 +20,11 @@ use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 use stickslip_bevy::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
 use stickslip_core::contact::{ContactInput, step_contact};
-use stickslip_core::law::{Coulomb, Law};
+use stickslip_core::law::{Coulomb, FrictionLaw, Law};
+
+/// The friction coefficient per point, over the law's limit, of a contact held at its capacity
+/// whose points did not all share the friction as the load asked (see `apply`).
+const HEADROOM: f32 = 2.0;
 
 /// The components of a collider stickslip reads.
 type ColliderItem = (
@@ -211,6 +215,9 @@ pub(crate) fn apply(
             } else {
                 1.0
             };
+            // The last solve stayed inside the limit it had.
+            let inside = f64::from(stickslip_core::contact::length(record.measured.mu))
+                < (1.0 - stickslip_core::contact::SATURATION) * f64::from(record.state.limit);
             let out = step_contact(
                 &mut record.state,
                 &ContactInput::new(law, &basis, dt)
@@ -229,7 +236,28 @@ pub(crate) fn apply(
             record.slip = Vec3::from_array(basis.lift(slip));
             record.point = lift(manifold.points.iter().map(|p| p.point).sum::<Vector>() / points);
             record.normal = lift(n);
-            manifold.friction = record.state.limit;
+            // avian clamps each point at the coefficient times its own normal impulse. A held
+            // box that its load tips forward carries less normal impulse at its back points
+            // than their share of the friction: they sit at their clamp while the front ones
+            // hold, and while avian's soft normal rows move the load between them (about a
+            // second at 2 substeps) the clamped points let the contact slip by tens of
+            // microns. So a contact the law holds at its capacity (formed, its last solve
+            // inside the limit, no vibration) whose points did not all share the friction as
+            // they liked gets HEADROOM times the limit per point until it stops holding: its
+            // points share the friction as the load asks, and the kernel judges the whole
+            // contact against the law's limit (a total that reaches it ends the hold, one
+            // tick later than a point would have).
+            record.headroom = out.holding
+                && inside
+                && record.state.forming == 0
+                && source.is_none()
+                && out.limit <= law.static_coefficient()
+                && (record.headroom || record.measured.partly_clamped);
+            manifold.friction = if record.headroom {
+                record.state.limit * HEADROOM
+            } else {
+                record.state.limit
+            };
             if slip == [0.0, 0.0] {
                 start_inside_the_cone(manifold);
             }

@@ -23,19 +23,18 @@ use stickslip_bevy::{ContactReport, RegimeChanged, StickSlipContacts};
 use stickslip_core::contact::REGIME_NONE;
 use stickslip_core::law::Regime;
 
-/// Whether every loaded point of the constraint ended the substep with its friction at its
-/// clamp, μ times its own normal impulse (to the kernel's saturation share).
-fn all_clamped(c: &ContactConstraint) -> bool {
+/// How many of the constraint's points carry a normal impulse, and how many of those ended
+/// the substep with their friction at their own clamp, μ times their own normal impulse (to
+/// the kernel's saturation share).
+fn clamped(c: &ContactConstraint) -> (usize, usize) {
     let share = 1.0 - stickslip_core::contact::SATURATION as f32;
-    let mut loaded = c
-        .points
+    c.points
         .iter()
         .filter(|p| p.normal_part.impulse > 0.0)
-        .peekable();
-    loaded.peek().is_some()
-        && loaded.all(|p| {
-            p.tangent_part.is_some()
-                && friction_impulse(p) >= share * c.friction * p.normal_part.impulse
+        .fold((0, 0), |(loaded, clamped), p| {
+            let at_clamp = p.tangent_part.is_some()
+                && friction_impulse(p) >= share * c.friction * p.normal_part.impulse;
+            (loaded + 1, clamped + usize::from(at_clamp))
         })
 }
 
@@ -137,6 +136,8 @@ pub(crate) fn measure(
             };
             // The law's measurement: the last substep (restitution's share included).
             let (normal, friction) = impulses(c);
+            let (loaded, at_clamp) = clamped(c);
+            let all_clamped = loaded > 0 && at_clamp == loaded;
             // The impulse on body 2 is +λ_t: μ⃗ = −Σλ_t / Σλ_n.
             let mu = if normal > 0.0 {
                 let mu = -friction / normal;
@@ -144,7 +145,7 @@ pub(crate) fn measure(
                 // that held every point at its clamp reached the limit, although the
                 // points' sum can fall a little short of it (a landing braked at 0.998).
                 let length = mu.length();
-                if all_clamped(c) && length > 0.0 {
+                if all_clamped && length > 0.0 {
                     (mu * (c.friction / length)).to_array()
                 } else {
                     mu.to_array()
@@ -156,6 +157,7 @@ pub(crate) fn measure(
                 normal_force: normal as f64 / h,
                 mu,
                 normal_impulse: normal,
+                partly_clamped: at_clamp > 0 && !all_clamped,
             };
             // The read-back: the whole tick. Restitution, after the substeps, adds to the
             // last substep's normal impulses.

@@ -17,6 +17,8 @@ pub(crate) struct Measured {
     pub mu: World,
     /// The last substep's normal impulse (N·s), for the next tick's warm-start share.
     pub normal_impulse: f32,
+    /// Whether some loaded points, but not all, ended the solve at their own clamp.
+    pub partly_clamped: bool,
 }
 
 /// What the solver did at a contact over the whole tick, for the read-back: all substeps'
@@ -61,6 +63,8 @@ pub(crate) struct Record {
     /// keeps the warm start (see `measure::carry_warm_start`; 3D only).
     #[cfg(not(dim2))]
     pub basis: Option<(Vec3, Vec3)>,
+    /// Whether the solver gets headroom per point while the law holds (see `apply`).
+    pub headroom: bool,
     /// The tick it was last stepped in.
     pub tick: u64,
     /// The slip velocity it was stepped with (m/s, world), for the read-back.
@@ -80,6 +84,7 @@ impl Default for Record {
             tick_forces: TickForces::default(),
             #[cfg(not(dim2))]
             basis: None,
+            headroom: false,
             tick: 0,
             slip: Vec3::ZERO,
             point: Vec3::ZERO,

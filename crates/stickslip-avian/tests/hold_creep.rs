@@ -2,10 +2,10 @@
 //! tick rate and substep count: a 2 kg box (0.4 m cube) with an elasto-plastic material
 //! (c = 3e4 1/m, μ_ba = μ_max = 0.5, sliding at 0.4: elastic range μ_ba/c = 16.7 µm) on a floor
 //! under gravity tilted to tan θ = 0.45 (0.9 of break-away) moves less than μ_ba/c over 5 s
-//! and never leaves sticking: loaded at once after 0.5 s on a level floor, at 60 and 120 Hz
-//! and 2, 6 and 12 substeps; put down on the slope likewise (at 60 Hz and 2 substeps within
-//! 1.5 times the range: it lands sliding, avian having no contact the tick before). avian's own hold at
-//! μ 0.5 creeps by millimetres there (printed beside). The read-back gives
+//! and never leaves sticking: loaded at once after 0.5 s on a level floor, and put down on
+//! the slope (it lands sliding, avian having no contact the tick before), at 60 and 120 Hz
+//! and 2, 6 and 12 substeps. avian's own hold at μ 0.5 creeps by millimetres there (printed
+//! beside). The read-back gives
 //! the tick's forces over all substeps: the held box's friction m g sin θ and normal force
 //! m g cos θ within 1 %, and a 3 000 kg sled dragged at 0.01 m/s, which its friction stops
 //! within the first substep of every tick, a friction of m v per tick (within 1 %) where the
@@ -94,10 +94,9 @@ fn hold_from(
     (moved, regimes, friction.length() as f64, normal)
 }
 
-/// Checks one hold: within `ranges` times the elastic range, sticking throughout, and the
-/// read-back's forces.
-fn check(hz: f64, substeps: u32, level_first: bool, ranges: f64) {
-    let range = ranges * MU_BA / C;
+/// Checks one hold: within the elastic range, sticking throughout, and the read-back's forces.
+fn check(hz: f64, substeps: u32, level_first: bool) {
+    let range = MU_BA / C;
     let weight = MASS as f64 * G;
     let theta = TAN.atan();
     let (moved, regimes, friction, normal) = hold_from(true, hz, substeps, level_first);
@@ -138,7 +137,7 @@ fn check(hz: f64, substeps: u32, level_first: bool, ranges: f64) {
 fn a_box_loaded_to_0_9_of_break_away_holds_within_the_elastic_range() {
     for hz in [60.0, 120.0] {
         for substeps in [2, 6, 12] {
-            check(hz, substeps, true, 1.0);
+            check(hz, substeps, true);
         }
     }
 }
@@ -147,16 +146,11 @@ fn a_box_loaded_to_0_9_of_break_away_holds_within_the_elastic_range() {
 fn a_box_put_down_on_the_slope_holds_within_the_elastic_range() {
     // Put down, the box falls free for the tick before avian has its contact and lands
     // sliding; the law holds it at its capacity while that slide shrinks (avian brakes it
-    // with every point at its own clamp). At 60 Hz and 2 substeps the box then moves 21 µm
-    // in the 5 s, 1.3 times the range: allowed 1.5 there.
+    // with every point at its own clamp), then holds it while avian's soft normal rows move
+    // the load from the back points to the front ones.
     for hz in [60.0, 120.0] {
         for substeps in [2, 6, 12] {
-            let ranges = if hz == 60.0 && substeps == 2 {
-                1.5
-            } else {
-                1.0
-            };
-            check(hz, substeps, false, ranges);
+            check(hz, substeps, false);
         }
     }
 }
