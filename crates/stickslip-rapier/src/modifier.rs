@@ -184,6 +184,9 @@ pub struct StickSlip<H = ()> {
     /// Which attached colliders have their flag off because their contacts are quiet (see
     /// `recycle`).
     pub(crate) recycling: Recycling,
+    /// The joints and states of the pairs that resist rolling or spinning (see `rolling`).
+    #[cfg(not(dim2))]
+    pub(crate) rolling: crate::rolling::Rolling,
 }
 
 impl StickSlip<()> {
@@ -216,6 +219,8 @@ impl<H> StickSlip<H> {
             patches_seen: Default::default(),
             patches_measured: HashMap::new(),
             recycling: Recycling::default(),
+            #[cfg(not(dim2))]
+            rolling: Default::default(),
         }
     }
 
@@ -732,6 +737,40 @@ impl<H> StickSlip<H> {
         }
     }
 
+    /// Rolling and spinning resistance for the coming step (see
+    /// [`FrictionMaterial::with_rolling`]): steps the resisting laws of the touching pairs whose
+    /// materials ask for it and sets their joints' motors in `joints` (one impulse joint per
+    /// such pair, which stickslip adds and removes; a collider without a body hangs its
+    /// joints from one fixed body stickslip adds to `bodies`). [`Self::step`] calls it; when you step
+    /// rapier yourself, call it after [`Self::begin_step`] and before rapier's step. Does
+    /// nothing (and costs one look over the materials) when no material resists rotation.
+    #[cfg(not(dim2))]
+    pub fn resist_rotation(
+        &mut self,
+        params: &IntegrationParameters,
+        joints: &mut ImpulseJointSet,
+        narrow_phase: &NarrowPhase,
+        bodies: &mut RigidBodySet,
+        colliders: &ColliderSet,
+    ) {
+        let dt = self.clock.dt;
+        if !(dt > 0.0) || (self.rolling.is_empty() && !self.laws.any_rotation()) {
+            return;
+        }
+        let (laws, attached) = (&self.laws, &self.attached);
+        self.rolling.before_step(
+            joints,
+            params.num_solver_iterations.max(1),
+            narrow_phase,
+            bodies,
+            colliders,
+            dt,
+            self.clock.time,
+            self.config.stiffness_time,
+            |c1, c2| laws.rotation_laws(attached, colliders, (c1, c2)),
+        );
+    }
+
     /// One step of `world` with this modifier (and no event handler of yours: pass one with
     /// [`Self::step_with_events`]).
     pub fn step(&mut self, world: &mut PhysicsWorld)
@@ -755,6 +794,14 @@ impl<H> StickSlip<H> {
             &world.integration_parameters,
             &world.bodies,
             &mut world.colliders,
+        );
+        #[cfg(not(dim2))]
+        self.resist_rotation(
+            &world.integration_parameters,
+            &mut world.impulse_joints,
+            &world.narrow_phase,
+            &mut world.bodies,
+            &world.colliders,
         );
         world.step_with_events(&*self, events);
         self.end_step(&world.narrow_phase, &world.bodies, &mut world.colliders);

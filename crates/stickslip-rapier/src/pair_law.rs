@@ -199,6 +199,64 @@ impl PairLaws {
         }
     }
 
+    /// Whether any material (a collider's, the default, a pair's) resists rotation.
+    #[cfg(not(dim2))]
+    pub fn any_rotation(&self) -> bool {
+        self.palette
+            .0
+            .iter()
+            .any(FrictionMaterial::resists_rotation)
+            || self.pairs.values().any(FrictionMaterial::resists_rotation)
+    }
+
+    /// The rolling and spinning laws of the pair `(c1, c2)`, if its materials ask for any:
+    /// the pair's own material's, else the attached sides' (both: combined by the pair's
+    /// rule, like the friction law; an unattached side brings none).
+    #[cfg(not(dim2))]
+    pub fn rotation_laws(
+        &self,
+        attached: &ColliderBits,
+        colliders: &ColliderSet,
+        (c1, c2): (ColliderHandle, ColliderHandle),
+    ) -> Option<crate::rolling::RotationLaws> {
+        let laws = |rolling: Option<Law>, spinning: Option<Law>| {
+            (rolling.is_some() || spinning.is_some())
+                .then_some(crate::rolling::RotationLaws { rolling, spinning })
+        };
+        if let Some(m) = self.pairs.get(&pair_key(c1, c2)) {
+            return laws(m.rolling.clone(), m.spinning.clone());
+        }
+        if !attached.contains(c1) && !attached.contains(c2) {
+            return None;
+        }
+        let ((s1, r1), (s2, r2)) = (
+            self.side(attached, colliders, c1),
+            self.side(attached, colliders, c2),
+        );
+        let rule = r1.effective(r2);
+        let material = |s: Side| match s {
+            Side::Material(id) => Some(self.palette.get(id)),
+            Side::Plain(_) => None,
+        };
+        let (m1, m2) = (material(s1), material(s2));
+        let pick = |a: Option<&Law>, b: Option<&Law>| match (a, b) {
+            (Some(a), Some(b)) if a == b => Some(a.clone()),
+            (Some(a), Some(b)) => Some(a.combine_or_coulomb(b, rule).0),
+            (Some(x), None) | (None, Some(x)) => Some(x.clone()),
+            (None, None) => None,
+        };
+        laws(
+            pick(
+                m1.and_then(|m| m.rolling.as_ref()),
+                m2.and_then(|m| m.rolling.as_ref()),
+            ),
+            pick(
+                m1.and_then(|m| m.spinning.as_ref()),
+                m2.and_then(|m| m.spinning.as_ref()),
+            ),
+        )
+    }
+
     /// Runs `f` on the law of the pair `(c1, c2)` (which must have an `attached` collider).
     pub fn with_pair_law<R>(
         &self,

@@ -1,0 +1,414 @@
+//! Rolling and spinning resistance (3D): a torque against the relative rotation of two
+//! touching bodies, M_r = μ_r R F_n against rolling and M_s = μ_spin a F_n against spinning,
+//! each governed by a friction law of the pair's materials (see
+//! [`stickslip_core::FrictionMaterial::rolling`]).
+//!
+//! **Mechanism.** rapier's contact hook can only write friction coefficients and target
+//! velocities; it cannot apply a torque. So every touching pair whose materials ask for it
+//! gets an impulse joint between its two bodies, with no locked axis (it constrains nothing
+//! but what it resists, and leaves the contact to rapier) and three angular velocity motors
+//! in a frame with y along the contact normal: x and z resist rolling, y spinning. Each motor
+//! drives its component of the relative angular velocity to the law's target (zero unless a
+//! law creeps), with its torque capped at the law's limit times arm times normal force. The
+//! motors are rows of rapier's own solver, solved in the same iterations and substeps as the
+//! contact's normal and friction rows, so the resisting torque, the contact's friction and
+//! its normal force come out of one solve: a ball held on a slope is held by the friction
+//! that stops it sliding and the torque that stops it rolling together, as a box is held by
+//! friction alone.
+//!
+//! **The law.** Before each step the pair's rolling and spinning states are stepped by the
+//! engine-free kernel (`step_contact`), exactly as a contact's friction is, on the rolled
+//! arc: the "slip" is the arm times the relative angular velocity (its tangential part for
+//! rolling, its normal part for spinning), the "measured friction" the motors' last impulse
+//! over arm, normal impulse. So a hold is the kernel's hold: while the law sticks the motor is
+//! rigid up to the law's capacity (the elasto-plastic break-away μ_ba) and nothing creeps;
+//! beyond it the law yields and the motor brakes at the law's sliding level μ(R|ω|).
+//!
+//! **Arms.** From the shapes at the contact: R_i is the distance from body i's centre of mass
+//! to the contact plane (a ball's radius, a cylinder's on its side), R = R₁R₂/(R₁+R₂) (a
+//! fixed body counts as infinitely large); a is the spread of the contact's points (their
+//! largest distance from their centroid), or R for a single point.
+//!
+//! A collider without a body (a static ground) has its joint on a fixed body at the origin
+//! that stickslip adds to the world once: rapier joins bodies only.
+//!
+//! **Normal force.** The last step's (the contact's normal impulse over the step), as the
+//! friction limit's: the torque limit lags the load by one step.
+//!
+//! Rolling axes: x is kept along the rolling direction (or the last one while the contact
+//! holds), so each motor's own cap is the law's limit along the way the load acts.
+
+use crate::measure::{measure, world_centroid};
+use rapier::math::Mat3;
+use rapier::prelude::*;
+use std::collections::HashMap;
+use stickslip_core::contact::{ContactInput, ContactState, TangentBasis, step_contact};
+use stickslip_core::law::Law;
+
+/// Marks stickslip's joints (`GenericJoint::user_data`), so that a world restored from a
+/// snapshot does not keep them twice.
+pub(crate) const JOINT_TAG: u128 = 0x5354_4943_4b53_4c49_505f_524f_4c4c_0001;
+
+/// A motor's damping: rigid (its row is a velocity constraint up to its torque cap).
+const RIGID: f32 = 1e9;
+
+/// The rolling and spinning laws of a pair.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct RotationLaws {
+    pub rolling: Option<Law>,
+    pub spinning: Option<Law>,
+}
+
+/// One resisting pair.
+#[derive(Debug, Clone)]
+struct Resisting {
+    joint: ImpulseJointHandle,
+    roll: ContactState,
+    spin: ContactState,
+    /// The world axes the motors acted along in the last step (x: first rolling axis, y: the
+    /// normal); zero before the first.
+    axis_x: Vector,
+    normal: Vector,
+    /// The arms of the last step (m).
+    arm_roll: f32,
+    arm_spin: f32,
+    /// The step it was last seen touching.
+    seen: u64,
+}
+
+/// Every resisting pair's joint and states.
+#[derive(Debug, Default)]
+pub(crate) struct Rolling {
+    pairs: HashMap<(ColliderHandle, ColliderHandle), Resisting>,
+    step: u64,
+    /// Joints of an earlier modifier (a restored snapshot's) were removed.
+    adopted: bool,
+    /// The fixed body the joints of colliders without a body hang from (rapier joins
+    /// bodies only).
+    anchor: Option<RigidBodyHandle>,
+}
+
+/// The basis of the kernel for the rolling axes (x, z = x × n) and normal n: components
+/// (x, −z) are the kernel's (t1, t2 = n × t1).
+fn kernel_basis(x: Vector, n: Vector) -> TangentBasis {
+    TangentBasis::plane(n.to_array(), x.to_array())
+}
+
+/// A unit vector normal to `n`: `hint` made normal to it, else any.
+fn tangent_axis(hint: Vector, n: Vector) -> Vector {
+    let t = hint - n * n.dot(hint);
+    if t.length_squared() > 1e-12 {
+        t.normalize()
+    } else {
+        n.any_orthonormal_vector()
+    }
+}
+
+/// The distance from a body's centre of mass to the contact plane through `p` with normal
+/// `n`; infinite for a fixed body or none.
+fn arm_of(bodies: &RigidBodySet, h: Option<RigidBodyHandle>, p: Vector, n: Vector) -> f32 {
+    match h.and_then(|h| bodies.get(h)) {
+        Some(b) if !b.is_fixed() => (p - b.center_of_mass()).dot(n).abs(),
+        _ => f32::INFINITY,
+    }
+}
+
+/// The largest inverse principal inertia of a body (0 for a fixed body or none).
+fn inv_inertia(bodies: &RigidBodySet, h: Option<RigidBodyHandle>) -> f32 {
+    match h.and_then(|h| bodies.get(h)) {
+        Some(b) if b.is_dynamic() => b
+            .mass_properties()
+            .local_mprops
+            .inv_principal_inertia
+            .max_element(),
+        _ => 0.0,
+    }
+}
+
+impl Rolling {
+    /// The body of a collider, or for one without, the anchor: a fixed body at the origin
+    /// that stickslip adds to the world once (marked with [`JOINT_TAG`] as its `user_data`,
+    /// and taken over from a restored world that has one).
+    fn body_of(
+        &mut self,
+        bodies: &mut RigidBodySet,
+        parent: Option<RigidBodyHandle>,
+    ) -> RigidBodyHandle {
+        if let Some(h) = parent {
+            return h;
+        }
+        if let Some(h) = self.anchor.filter(|&h| bodies.get(h).is_some()) {
+            return h;
+        }
+        let found = bodies
+            .iter()
+            .find(|(_, b)| b.user_data == JOINT_TAG && b.is_fixed())
+            .map(|(h, _)| h);
+        let h =
+            found.unwrap_or_else(|| bodies.insert(RigidBodyBuilder::fixed().user_data(JOINT_TAG)));
+        self.anchor = Some(h);
+        h
+    }
+
+    /// Steps every touching pair `laws_of` gives rotation laws and sets its joint's motors
+    /// for the coming step; removes the joints of pairs no longer touching.
+    #[allow(clippy::too_many_arguments)]
+    pub fn before_step(
+        &mut self,
+        joints: &mut ImpulseJointSet,
+        substeps: usize,
+        narrow_phase: &NarrowPhase,
+        bodies: &mut RigidBodySet,
+        colliders: &ColliderSet,
+        dt: f64,
+        time: f64,
+        stiffness_time: f64,
+        mut laws_of: impl FnMut(ColliderHandle, ColliderHandle) -> Option<RotationLaws>,
+    ) {
+        if !self.adopted {
+            // Joints a restored snapshot brought: this modifier's states start afresh.
+            let stale: Vec<_> = joints
+                .iter()
+                .filter(|(_, j)| j.data.user_data == JOINT_TAG)
+                .map(|(h, _)| h)
+                .collect();
+            for h in stale {
+                joints.remove(h, false);
+            }
+            self.adopted = true;
+        }
+        self.step += 1;
+        let step = self.step;
+        for pair in narrow_phase.contact_pairs() {
+            if !pair.has_any_active_contact() {
+                continue;
+            }
+            let (c1, c2) = (pair.collider1, pair.collider2);
+            let Some(laws) = laws_of(c1, c2) else {
+                continue;
+            };
+            let (Some(co1), Some(co2)) = (colliders.get(c1), colliders.get(c2)) else {
+                continue;
+            };
+            if co1.parent().is_none() && co2.parent().is_none() {
+                continue;
+            }
+            let (b1, b2) = (
+                self.body_of(bodies, co1.parent()),
+                self.body_of(bodies, co2.parent()),
+            );
+            if b1 == b2 {
+                continue;
+            }
+            let bodies = &*bodies;
+            // The manifold carrying the most of the pair's load.
+            let Some(m) = pair
+                .solver_manifolds()
+                .iter()
+                .filter(|m| !m.data.solver_contacts.is_empty())
+                .max_by_key(|m| m.data.solver_contacts.len())
+            else {
+                continue;
+            };
+            let Some((p, _)) = world_centroid(m, colliders, (c1, c2)) else {
+                continue;
+            };
+            let n = m.data.normal;
+            let f_n = measure(m, &m.data.solver_contacts, dt, None).normal_force;
+            let (r1, r2) = (
+                arm_of(bodies, Some(b1), p, n),
+                arm_of(bodies, Some(b2), p, n),
+            );
+            let arm_roll = if r1.is_infinite() {
+                r2
+            } else if r2.is_infinite() {
+                r1
+            } else {
+                r1 * r2 / (r1 + r2)
+            };
+            if !(arm_roll.is_finite() && arm_roll > 0.0) {
+                continue;
+            }
+            let spread = {
+                let pose = |h: ColliderHandle| colliders.get(h).map(|c| *c.position());
+                let (Some(pos1), Some(pos2)) = (pose(c1), pose(c2)) else {
+                    continue;
+                };
+                let (pos1, pos2) = (
+                    m.subshape_pos1().map_or(pos1, |s| pos1 * *s),
+                    m.subshape_pos2().map_or(pos2, |s| pos2 * *s),
+                );
+                m.data
+                    .solver_contacts
+                    .iter()
+                    .filter_map(|c| m.points.get(c.contact_indices()[0] as usize))
+                    .map(|q| ((pos1 * q.local_p1 + pos2 * q.local_p2) * 0.5 - p).length())
+                    .fold(0.0f32, f32::max)
+            };
+            let arm_spin = if spread > 1e-3 * arm_roll {
+                spread
+            } else {
+                arm_roll
+            };
+            let (w1, w2) = (
+                bodies.get(b1).map_or(Vector::ZERO, |b| b.angvel()),
+                bodies.get(b2).map_or(Vector::ZERO, |b| b.angvel()),
+            );
+            let w = w2 - w1;
+            let w_spin = n.dot(w);
+            let w_roll = w - n * w_spin;
+            let inv_inertia =
+                (inv_inertia(bodies, Some(b1)) + inv_inertia(bodies, Some(b2))) as f64;
+
+            let entry = self.pairs.get_mut(&(c1, c2));
+            let fresh = entry.is_none();
+            let mut r = match entry {
+                Some(r) => r.clone(),
+                None => Resisting {
+                    joint: ImpulseJointHandle::invalid(),
+                    roll: ContactState::default(),
+                    spin: ContactState::default(),
+                    axis_x: Vector::ZERO,
+                    normal: Vector::ZERO,
+                    arm_roll,
+                    arm_spin,
+                    seen: step,
+                },
+            };
+            // The motors' impulses over the last step (torque on body 2: −λ along each axis).
+            // rapier keeps a motor's impulse of the last substep; the substeps are of equal
+            // length.
+            let last = joints.get(r.joint).filter(|_| !fresh);
+            let impulse = |axis: JointAxis| {
+                last.map_or(0.0, |j| j.data.motors[axis as usize].impulse) as f64 * substeps as f64
+            };
+            let normal_impulse = f_n * dt;
+            let mu_of = |lambda: f64, arm: f32| {
+                if normal_impulse > 0.0 {
+                    lambda / (arm as f64 * normal_impulse)
+                } else {
+                    0.0
+                }
+            };
+            // Rolling axes: along the rolling, else the last ones carried onto this plane.
+            let roll_speed = w_roll.length() * arm_roll;
+            let old_basis = kernel_basis(r.axis_x, r.normal);
+            let axis_x = if roll_speed > 1e-6 {
+                // The rolling direction of the contact point is ω × n: its axis is ω's own
+                // tangential direction.
+                w_roll / w_roll.length()
+            } else {
+                tangent_axis(r.axis_x, n)
+            };
+            let basis = kernel_basis(axis_x, n);
+            // The last solve's resisting "friction" as a world vector, re-expressed in this
+            // step's axes.
+            let measured = {
+                let old = old_basis.lift([
+                    mu_of(impulse(JointAxis::AngX), r.arm_roll),
+                    -mu_of(impulse(JointAxis::AngZ), r.arm_roll),
+                ]);
+                basis.project(old)
+            };
+            let mut torque_roll = (0.0, [0.0f64; 2]);
+            if let Some(law) = &laws.rolling {
+                let slip = basis.project((w_roll * arm_roll).to_array());
+                let out = step_contact(
+                    &mut r.roll,
+                    &ContactInput::new(law, &basis, dt)
+                        .with_solve(f_n, measured, slip)
+                        .at_time(time)
+                        .with_inv_mass(inv_inertia * (arm_roll as f64).powi(2))
+                        .with_stiffness_time(stiffness_time),
+                );
+                torque_roll = (out.limit * arm_roll as f64 * f_n, out.target);
+            }
+            let mut torque_spin = (0.0, 0.0);
+            if let Some(law) = &laws.spinning {
+                let line = TangentBasis::plane([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]);
+                let measured = [mu_of(impulse(JointAxis::AngY), r.arm_spin), 0.0];
+                let slip = [(w_spin * arm_spin) as f64, 0.0];
+                let out = step_contact(
+                    &mut r.spin,
+                    &ContactInput::new(law, &line, dt)
+                        .with_solve(f_n, measured, slip)
+                        .at_time(time)
+                        .with_inv_mass(inv_inertia * (arm_spin as f64).powi(2))
+                        .with_stiffness_time(stiffness_time),
+                );
+                torque_spin = (out.limit * arm_spin as f64 * f_n, out.target[0]);
+            }
+            // The joint's frame: x, the normal as y, z = x × n; on each body, at the contact.
+            let z = axis_x.cross(n);
+            let world = Rotation::from_mat3(&Mat3::from_cols(axis_x, n, z));
+            let frame = |h: RigidBodyHandle| {
+                bodies.get(h).map_or(Pose::IDENTITY, |b| {
+                    let pose = b.position();
+                    Pose::from_parts(
+                        pose.inverse_transform_point(p),
+                        pose.rotation.inverse() * world,
+                    )
+                })
+            };
+            let (frame1, frame2) = (frame(b1), frame(b2));
+            let set = |j: &mut GenericJoint| {
+                j.set_local_frame1(frame1);
+                j.set_local_frame2(frame2);
+                let motors = [
+                    (
+                        JointAxis::AngX,
+                        torque_roll.0,
+                        torque_roll.1[0] / arm_roll as f64,
+                    ),
+                    (
+                        JointAxis::AngZ,
+                        torque_roll.0,
+                        -torque_roll.1[1] / arm_roll as f64,
+                    ),
+                    (
+                        JointAxis::AngY,
+                        torque_spin.0,
+                        torque_spin.1 / arm_spin as f64,
+                    ),
+                ];
+                for (axis, max, target) in motors {
+                    let (max, target) = if max.is_finite() && target.is_finite() {
+                        (max.max(0.0) as f32, target as f32)
+                    } else {
+                        (0.0, 0.0)
+                    };
+                    j.set_motor_velocity(axis, target, RIGID);
+                    j.set_motor_max_force(axis, max);
+                }
+            };
+            match joints.get_mut(r.joint, false).filter(|_| !fresh) {
+                Some(j) => set(&mut j.data),
+                None => {
+                    let mut j = GenericJoint::new(JointAxesMask::empty());
+                    j.user_data = JOINT_TAG;
+                    set(&mut j);
+                    r.joint = joints.insert(b1, b2, j, false);
+                }
+            }
+            r.axis_x = axis_x;
+            r.normal = n;
+            r.arm_roll = arm_roll;
+            r.arm_spin = arm_spin;
+            r.seen = step;
+            self.pairs.insert((c1, c2), r);
+        }
+        // Pairs that stopped touching (or resisting) lose their joint.
+        self.pairs.retain(|_, r| {
+            let keep = r.seen == step;
+            if !keep {
+                joints.remove(r.joint, false);
+            }
+            keep
+        });
+    }
+
+    /// Whether no pair resists rotation now.
+    pub fn is_empty(&self) -> bool {
+        self.pairs.is_empty()
+    }
+}
