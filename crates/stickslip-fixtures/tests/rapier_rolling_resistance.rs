@@ -9,8 +9,9 @@
 //! floor stops after v0² / (2 (5/7) μ_r g) within 2 %; a sphere spun about the normal stops
 //! after I ω0 / M_s with M_s = μ_spin R F_n (a point contact's arm is the rolling arm R)
 //! within 2 %. Without resistance in the material the same scenes are plain stickslip: a
-//! ball keeps rolling (the resistance is off unless asked for).
-#![cfg(not(dim2))]
+//! ball keeps rolling (the resistance is off unless asked for). In 2D (stickslip-fixtures2d)
+//! the ball is a disc, I = m R²/2: it rolls at (2/3) g (sin θ − μ_r cos θ) and stops after
+//! v0² / (2 (2/3) μ_r g); 2D has no spinning.
 
 use stickslip_core::FrictionMaterial;
 use stickslip_core::law::Law;
@@ -19,6 +20,28 @@ use stickslip_rapier::StickSlip;
 use stickslip_rapier::rapier::prelude::*;
 
 const G: f64 = 9.81;
+/// m / (m + I/R²) of the roller: a solid ball 5/7, a disc (2D) 2/3.
+const ROLL: f64 = if cfg!(dim2) { 2.0 / 3.0 } else { 5.0 / 7.0 };
+
+/// A vector in the x-y plane.
+#[cfg(not(dim2))]
+fn planar(x: f32, y: f32) -> Vector {
+    Vector::new(x, y, 0.0)
+}
+/// A vector in the x-y plane.
+#[cfg(dim2)]
+fn planar(x: f32, y: f32) -> Vector {
+    Vector::new(x, y)
+}
+
+/// Sets a ball of radius `r` on a floor below it rolling along +x at `v`.
+fn set_rolling(body: &mut RigidBody, v: f32, r: f32) {
+    body.set_linvel(planar(v, 0.0), true);
+    #[cfg(not(dim2))]
+    body.set_angvel(Vector::new(0.0, 0.0, -v / r), true);
+    #[cfg(dim2)]
+    body.set_angvel(-v / r, true);
+}
 /// Stiffness of the laws (1/m of slip or of rolled arc).
 const C: f64 = 1e4;
 /// The contact's own friction coefficient.
@@ -49,12 +72,16 @@ struct Scene {
 fn scene(r: f32, tan_theta: f64, mu_r: f64, hz: f64) -> Scene {
     let mut world = PhysicsWorld::default();
     let theta = tan_theta.atan();
-    world.gravity = Vector::new((G * theta.sin()) as f32, -(G * theta.cos()) as f32, 0.0);
+    world.gravity = planar((G * theta.sin()) as f32, -(G * theta.cos()) as f32);
     world.integration_parameters.dt = (1.0 / hz) as f32;
-    let ground = world.insert_collider(ColliderBuilder::cuboid(500.0, 0.5, 500.0), None);
+    #[cfg(not(dim2))]
+    let floor = ColliderBuilder::cuboid(500.0, 0.5, 500.0);
+    #[cfg(dim2)]
+    let floor = ColliderBuilder::cuboid(500.0, 0.5);
+    let ground = world.insert_collider(floor, None);
     let (body, handle) = world.insert(
         RigidBodyBuilder::dynamic()
-            .translation(Vector::new(0.0, 0.5 + r, 0.0))
+            .translation(planar(0.0, 0.5 + r))
             .can_sleep(false),
         ColliderBuilder::ball(r).density(1000.0),
     );
@@ -159,7 +186,7 @@ fn a_sphere_below_its_rolling_resistance_holds_on_a_slope() {
 
 #[test]
 fn a_sphere_above_it_rolls_at_the_closed_form_acceleration() {
-    let k = 5.0 / 7.0;
+    let k = ROLL;
     for hz in RATES {
         for mu_r in MU_R {
             for r in RADII {
@@ -195,14 +222,12 @@ fn a_ball_rolled_across_a_level_floor_stops_at_the_closed_form_distance() {
         for mu_r in MU_R {
             for r in RADII {
                 let v0 = top_speed(r, hz).min(0.5);
-                let expected = v0 * v0 / (2.0 * (5.0 / 7.0) * mu_r * G);
+                let expected = v0 * v0 / (2.0 * ROLL * mu_r * G);
                 let mut s = scene(r, 0.0, mu_r, hz);
                 s.run_for(0.25);
-                let body = &mut s.world.bodies[s.body];
-                body.set_linvel(Vector::new(v0 as f32, 0.0, 0.0), true);
-                body.set_angvel(Vector::new(0.0, 0.0, -(v0 as f32) / r), true);
+                set_rolling(&mut s.world.bodies[s.body], v0 as f32, r);
                 let x0 = s.x();
-                let stop_time = 1.5 * v0 / ((5.0 / 7.0) * mu_r * G);
+                let stop_time = 1.5 * v0 / (ROLL * mu_r * G);
                 s.run_for(stop_time);
                 let d = s.x() - x0;
                 let error = d / expected - 1.0;
@@ -220,6 +245,7 @@ fn a_ball_rolled_across_a_level_floor_stops_at_the_closed_form_distance() {
     }
 }
 
+#[cfg(not(dim2))]
 #[test]
 fn a_spinning_sphere_stops_at_the_closed_form_time() {
     for hz in RATES {
@@ -263,9 +289,7 @@ fn a_spinning_sphere_stops_at_the_closed_form_time() {
 fn without_resistance_a_ball_keeps_rolling() {
     let mut s = scene(0.1, 0.0, 0.0, 60.0);
     s.run_for(0.25);
-    let body = &mut s.world.bodies[s.body];
-    body.set_linvel(Vector::new(1.0, 0.0, 0.0), true);
-    body.set_angvel(Vector::new(0.0, 0.0, -10.0), true);
+    set_rolling(&mut s.world.bodies[s.body], 1.0, 0.1);
     s.run_for(10.0);
     let v = s.vx();
     println!("no resistance: 1 m/s after 10 s: {v:.4} m/s");

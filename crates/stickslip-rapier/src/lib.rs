@@ -60,7 +60,6 @@ mod rapier_compat;
 mod read_back;
 mod recycle;
 mod report;
-#[cfg(not(dim2))]
 mod rolling;
 pub mod snapshot;
 mod surface;

@@ -185,7 +185,6 @@ pub struct StickSlip<H = ()> {
     /// `recycle`).
     pub(crate) recycling: Recycling,
     /// The joints and states of the pairs that resist rolling or spinning (see `rolling`).
-    #[cfg(not(dim2))]
     pub(crate) rolling: crate::rolling::Rolling,
 }
 
@@ -219,7 +218,6 @@ impl<H> StickSlip<H> {
             patches_seen: Default::default(),
             patches_measured: HashMap::new(),
             recycling: Recycling::default(),
-            #[cfg(not(dim2))]
             rolling: Default::default(),
         }
     }
@@ -744,7 +742,7 @@ impl<H> StickSlip<H> {
     /// joints from one fixed body stickslip adds to `bodies`). [`Self::step`] calls it; when you step
     /// rapier yourself, call it after [`Self::begin_step`] and before rapier's step. Does
     /// nothing (and costs one look over the materials) when no material resists rotation.
-    #[cfg(not(dim2))]
+    /// In 2D a material resists rolling only (spinning needs a third dimension).
     pub fn resist_rotation(
         &mut self,
         params: &IntegrationParameters,
@@ -795,7 +793,6 @@ impl<H> StickSlip<H> {
             &world.bodies,
             &mut world.colliders,
         );
-        #[cfg(not(dim2))]
         self.resist_rotation(
             &world.integration_parameters,
             &mut world.impulse_joints,

@@ -200,7 +200,6 @@ impl PairLaws {
     }
 
     /// Whether any material (a collider's, the default, a pair's) resists rotation.
-    #[cfg(not(dim2))]
     pub fn any_rotation(&self) -> bool {
         self.palette
             .0
@@ -212,7 +211,6 @@ impl PairLaws {
     /// The rolling and spinning laws of the pair `(c1, c2)`, if its materials ask for any:
     /// the pair's own material's, else the attached sides' (both: combined by the pair's
     /// rule, like the friction law; an unattached side brings none).
-    #[cfg(not(dim2))]
     pub fn rotation_laws(
         &self,
         attached: &ColliderBits,

@@ -39,6 +39,7 @@
 //! holds), so each motor's own cap is the law's limit along the way the load acts.
 
 use crate::measure::{measure, world_centroid};
+#[cfg(not(dim2))]
 use rapier::math::Mat3;
 use rapier::prelude::*;
 use std::collections::HashMap;
@@ -61,6 +62,8 @@ pub(crate) struct RotationLaws {
 
 /// One resisting pair.
 #[derive(Debug, Clone)]
+// 2D resists rolling only.
+#[cfg_attr(dim2, allow(dead_code))]
 struct Resisting {
     joint: ImpulseJointHandle,
     roll: ContactState,
@@ -88,13 +91,71 @@ pub(crate) struct Rolling {
     anchor: Option<RigidBodyHandle>,
 }
 
+/// The kernel's basis for a resistance about one axis (spinning, or rolling in 2D): the
+/// "slip" is its first component.
+fn axis_basis() -> TangentBasis {
+    TangentBasis::plane([0.0, 0.0, 1.0], [1.0, 0.0, 0.0])
+}
+
+/// What a resisting motor needs of one step of its law.
+#[derive(Clone, Copy)]
+struct Step {
+    /// The pair's normal force (N) and the step (s), time at its start (s), the averaging
+    /// time of the mean normal force (s) and the bodies' summed largest inverse inertia.
+    normal_force: f64,
+    dt: f64,
+    time: f64,
+    stiffness_time: f64,
+    inv_inertia: f64,
+}
+
+/// Steps the law of a resistance about one axis (spinning, or rolling in 2D) with arm `arm`,
+/// relative angular velocity `rate` and the motor's measured "friction" `measured`: the
+/// motor's torque cap (N·m) and target rate (rad/s).
+fn step_axis(
+    state: &mut ContactState,
+    law: &Law,
+    arm: f32,
+    rate: f32,
+    measured: f64,
+    s: Step,
+) -> (f64, f64) {
+    let basis = axis_basis();
+    let out = step_contact(
+        state,
+        &ContactInput::new(law, &basis, s.dt)
+            .with_solve(s.normal_force, [measured, 0.0], [(rate * arm) as f64, 0.0])
+            .at_time(s.time)
+            .with_inv_mass(s.inv_inertia * (arm as f64).powi(2))
+            .with_stiffness_time(s.stiffness_time),
+    );
+    (
+        out.limit * arm as f64 * s.normal_force,
+        out.target[0] / arm as f64,
+    )
+}
+
+/// Sets a motor of `joint` to drive its axis' relative angular velocity to `target` with at
+/// most `max` (N·m); a non-finite value leaves it free.
+fn set_motor(joint: &mut GenericJoint, axis: JointAxis, max: f64, target: f64) {
+    let (max, target) = if max.is_finite() && target.is_finite() {
+        (max.max(0.0) as f32, target as f32)
+    } else {
+        (0.0, 0.0)
+    };
+    joint.set_motor_velocity(axis, target, RIGID);
+    joint.set_motor_max_force(axis, max);
+}
+
 /// The basis of the kernel for the rolling axes (x, z = x × n) and normal n: components
 /// (x, −z) are the kernel's (t1, t2 = n × t1).
+#[cfg(not(dim2))]
 fn kernel_basis(x: Vector, n: Vector) -> TangentBasis {
     TangentBasis::plane(n.to_array(), x.to_array())
 }
 
 /// A unit vector normal to `n`: `hint` made normal to it, else any.
+#[cfg(not(dim2))]
 fn tangent_axis(hint: Vector, n: Vector) -> Vector {
     let t = hint - n * n.dot(hint);
     if t.length_squared() > 1e-12 {
@@ -116,11 +177,12 @@ fn arm_of(bodies: &RigidBodySet, h: Option<RigidBodyHandle>, p: Vector, n: Vecto
 /// The largest inverse principal inertia of a body (0 for a fixed body or none).
 fn inv_inertia(bodies: &RigidBodySet, h: Option<RigidBodyHandle>) -> f32 {
     match h.and_then(|h| bodies.get(h)) {
-        Some(b) if b.is_dynamic() => b
-            .mass_properties()
-            .local_mprops
-            .inv_principal_inertia
-            .max_element(),
+        Some(b) if b.is_dynamic() => {
+            let inv = b.mass_properties().local_mprops.inv_principal_inertia;
+            #[cfg(not(dim2))]
+            let inv = inv.max_element();
+            inv
+        }
         _ => 0.0,
     }
 }
@@ -229,37 +291,39 @@ impl Rolling {
             if !(arm_roll.is_finite() && arm_roll > 0.0) {
                 continue;
             }
-            let spread = {
-                let pose = |h: ColliderHandle| colliders.get(h).map(|c| *c.position());
-                let (Some(pos1), Some(pos2)) = (pose(c1), pose(c2)) else {
-                    continue;
+            #[cfg(not(dim2))]
+            let arm_spin = {
+                let spread = {
+                    let pose = |h: ColliderHandle| colliders.get(h).map(|c| *c.position());
+                    let (Some(pos1), Some(pos2)) = (pose(c1), pose(c2)) else {
+                        continue;
+                    };
+                    let (pos1, pos2) = (
+                        m.subshape_pos1().map_or(pos1, |s| pos1 * *s),
+                        m.subshape_pos2().map_or(pos2, |s| pos2 * *s),
+                    );
+                    m.data
+                        .solver_contacts
+                        .iter()
+                        .filter_map(|c| m.points.get(c.contact_indices()[0] as usize))
+                        .map(|q| ((pos1 * q.local_p1 + pos2 * q.local_p2) * 0.5 - p).length())
+                        .fold(0.0f32, f32::max)
                 };
-                let (pos1, pos2) = (
-                    m.subshape_pos1().map_or(pos1, |s| pos1 * *s),
-                    m.subshape_pos2().map_or(pos2, |s| pos2 * *s),
-                );
-                m.data
-                    .solver_contacts
-                    .iter()
-                    .filter_map(|c| m.points.get(c.contact_indices()[0] as usize))
-                    .map(|q| ((pos1 * q.local_p1 + pos2 * q.local_p2) * 0.5 - p).length())
-                    .fold(0.0f32, f32::max)
+                if spread > 1e-3 * arm_roll {
+                    spread
+                } else {
+                    arm_roll
+                }
             };
-            let arm_spin = if spread > 1e-3 * arm_roll {
-                spread
-            } else {
-                arm_roll
+            #[cfg(dim2)]
+            let arm_spin = arm_roll;
+            let law_step = Step {
+                normal_force: f_n,
+                dt,
+                time,
+                stiffness_time,
+                inv_inertia: (inv_inertia(bodies, Some(b1)) + inv_inertia(bodies, Some(b2))) as f64,
             };
-            let (w1, w2) = (
-                bodies.get(b1).map_or(Vector::ZERO, |b| b.angvel()),
-                bodies.get(b2).map_or(Vector::ZERO, |b| b.angvel()),
-            );
-            let w = w2 - w1;
-            let w_spin = n.dot(w);
-            let w_roll = w - n * w_spin;
-            let inv_inertia =
-                (inv_inertia(bodies, Some(b1)) + inv_inertia(bodies, Some(b2))) as f64;
-
             let entry = self.pairs.get_mut(&(c1, c2));
             let fresh = entry.is_none();
             let mut r = match entry {
@@ -290,70 +354,65 @@ impl Rolling {
                     0.0
                 }
             };
-            // Rolling axes: along the rolling, else the last ones carried onto this plane.
-            let roll_speed = w_roll.length() * arm_roll;
-            let old_basis = kernel_basis(r.axis_x, r.normal);
-            let axis_x = if roll_speed > 1e-6 {
-                // The rolling direction of the contact point is ω × n: its axis is ω's own
-                // tangential direction.
-                w_roll / w_roll.length()
-            } else {
-                tangent_axis(r.axis_x, n)
-            };
-            let basis = kernel_basis(axis_x, n);
-            // The last solve's resisting "friction" as a world vector, re-expressed in this
-            // step's axes.
-            let measured = {
-                let old = old_basis.lift([
-                    mu_of(impulse(JointAxis::AngX), r.arm_roll),
-                    -mu_of(impulse(JointAxis::AngZ), r.arm_roll),
-                ]);
-                basis.project(old)
-            };
-            let mut torque_roll = (0.0, [0.0f64; 2]);
-            if let Some(law) = &laws.rolling {
-                let slip = basis.project((w_roll * arm_roll).to_array());
-                let out = step_contact(
-                    &mut r.roll,
-                    &ContactInput::new(law, &basis, dt)
-                        .with_solve(f_n, measured, slip)
-                        .at_time(time)
-                        .with_inv_mass(inv_inertia * (arm_roll as f64).powi(2))
-                        .with_stiffness_time(stiffness_time),
+            #[cfg(not(dim2))]
+            let (set, axis_x) = {
+                let (w1, w2) = (
+                    bodies.get(b1).map_or(Vector::ZERO, |b| b.angvel()),
+                    bodies.get(b2).map_or(Vector::ZERO, |b| b.angvel()),
                 );
-                torque_roll = (out.limit * arm_roll as f64 * f_n, out.target);
-            }
-            let mut torque_spin = (0.0, 0.0);
-            if let Some(law) = &laws.spinning {
-                let line = TangentBasis::plane([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]);
-                let measured = [mu_of(impulse(JointAxis::AngY), r.arm_spin), 0.0];
-                let slip = [(w_spin * arm_spin) as f64, 0.0];
-                let out = step_contact(
-                    &mut r.spin,
-                    &ContactInput::new(law, &line, dt)
-                        .with_solve(f_n, measured, slip)
-                        .at_time(time)
-                        .with_inv_mass(inv_inertia * (arm_spin as f64).powi(2))
-                        .with_stiffness_time(stiffness_time),
-                );
-                torque_spin = (out.limit * arm_spin as f64 * f_n, out.target[0]);
-            }
-            // The joint's frame: x, the normal as y, z = x × n; on each body, at the contact.
-            let z = axis_x.cross(n);
-            let world = Rotation::from_mat3(&Mat3::from_cols(axis_x, n, z));
-            let frame = |h: RigidBodyHandle| {
-                bodies.get(h).map_or(Pose::IDENTITY, |b| {
-                    let pose = b.position();
-                    Pose::from_parts(
-                        pose.inverse_transform_point(p),
-                        pose.rotation.inverse() * world,
-                    )
-                })
-            };
-            let (frame1, frame2) = (frame(b1), frame(b2));
-            let set = |j: &mut GenericJoint| {
-                j.set_local_frame1(frame1);
-                j.set_local_frame2(frame2);
+                let w = w2 - w1;
+                let w_spin = n.dot(w);
+                let w_roll = w - n * w_spin;
+                // Rolling axes: along the rolling, else the last ones carried onto this plane.
+                let roll_speed = w_roll.length() * arm_roll;
+                let old_basis = kernel_basis(r.axis_x, r.normal);
+                let axis_x = if roll_speed > 1e-6 {
+                    // The rolling direction of the contact point is ω × n: its axis is ω's own
+                    // tangential direction.
+                    w_roll / w_roll.length()
+                } else {
+                    tangent_axis(r.axis_x, n)
+                };
+                let basis = kernel_basis(axis_x, n);
+                // The last solve's resisting "friction" as a world vector, re-expressed in this
+                // step's axes.
+                let measured = {
+                    let old = old_basis.lift([
+                        mu_of(impulse(JointAxis::AngX), r.arm_roll),
+                        -mu_of(impulse(JointAxis::AngZ), r.arm_roll),
+                    ]);
+                    basis.project(old)
+                };
+                let mut torque_roll = (0.0, [0.0f64; 2]);
+                if let Some(law) = &laws.rolling {
+                    let slip = basis.project((w_roll * arm_roll).to_array());
+                    let out = step_contact(
+                        &mut r.roll,
+                        &ContactInput::new(law, &basis, dt)
+                            .with_solve(f_n, measured, slip)
+                            .at_time(time)
+                            .with_inv_mass(law_step.inv_inertia * (arm_roll as f64).powi(2))
+                            .with_stiffness_time(stiffness_time),
+                    );
+                    torque_roll = (out.limit * arm_roll as f64 * f_n, out.target);
+                }
+                let torque_spin = laws.spinning.as_ref().map_or((0.0, 0.0), |law| {
+                    let measured = mu_of(impulse(JointAxis::AngY), r.arm_spin);
+                    step_axis(&mut r.spin, law, arm_spin, w_spin, measured, law_step)
+                });
+                // The joint's frame: x, the normal as y, z = x × n; on each body, at the contact.
+                let z = axis_x.cross(n);
+                let world = Rotation::from_mat3(&Mat3::from_cols(axis_x, n, z));
+                let frame = |h: RigidBodyHandle| {
+                    bodies.get(h).map_or(Pose::IDENTITY, |b| {
+                        let pose = b.position();
+                        Pose::from_parts(
+                            pose.inverse_transform_point(p),
+                            pose.rotation.inverse() * world,
+                        )
+                    })
+                };
+                let (frame1, frame2) = (frame(b1), frame(b2));
                 let motors = [
                     (
                         JointAxis::AngX,
@@ -365,21 +424,31 @@ impl Rolling {
                         torque_roll.0,
                         -torque_roll.1[1] / arm_roll as f64,
                     ),
-                    (
-                        JointAxis::AngY,
-                        torque_spin.0,
-                        torque_spin.1 / arm_spin as f64,
-                    ),
+                    (JointAxis::AngY, torque_spin.0, torque_spin.1),
                 ];
-                for (axis, max, target) in motors {
-                    let (max, target) = if max.is_finite() && target.is_finite() {
-                        (max.max(0.0) as f32, target as f32)
-                    } else {
-                        (0.0, 0.0)
-                    };
-                    j.set_motor_velocity(axis, target, RIGID);
-                    j.set_motor_max_force(axis, max);
-                }
+                let set = move |j: &mut GenericJoint| {
+                    j.set_local_frame1(frame1);
+                    j.set_local_frame2(frame2);
+                    for (axis, max, target) in motors {
+                        set_motor(j, axis, max, target);
+                    }
+                };
+                (set, axis_x)
+            };
+            // 2D: the relative rotation is all rolling, about the one angular axis (the
+            // joint's frames do not matter to it).
+            #[cfg(dim2)]
+            let (set, axis_x) = {
+                // Spinning needs a third dimension.
+                let _ = &laws.spinning;
+                let w = bodies.get(b2).map_or(0.0, |b| b.angvel())
+                    - bodies.get(b1).map_or(0.0, |b| b.angvel());
+                let (max, target) = laws.rolling.as_ref().map_or((0.0, 0.0), |law| {
+                    let measured = mu_of(impulse(JointAxis::AngX), r.arm_roll);
+                    step_axis(&mut r.roll, law, arm_roll, w, measured, law_step)
+                });
+                let set = move |j: &mut GenericJoint| set_motor(j, JointAxis::AngX, max, target);
+                (set, Vector::ZERO)
             };
             match joints.get_mut(r.joint, false).filter(|_| !fresh) {
                 Some(j) => set(&mut j.data),
