@@ -118,11 +118,10 @@ impl Scene {
 
 const RATES: [f64; 2] = [60.0, 240.0];
 
-/// The speed up to which a ball of radius `r` is measured at `hz`: rapier's own rolling
-/// contact (without stickslip) loses accuracy once a ball turns by more than about 0.1 rad a
-/// step (a ball of 0.1 m rolling down tan θ = 0.2 at 60 Hz reaches 4.6 m/s, 0.76 rad a step,
-/// and accelerates 14 % below g sin θ / (1 + 2/5)), so the scenes stay below it, and below
-/// 1 m/s.
+/// The speed up to which a ball of radius `r` is measured at `hz`: a turn of 0.1 rad a step,
+/// and at most 1 m/s. rapier's own rolling contact (without stickslip) loses accuracy when a
+/// ball turns by a large angle a step; within this the roll without resistance, measured
+/// beside each case, keeps to its closed form.
 fn top_speed(r: f32, hz: f64) -> f64 {
     (0.1 * r as f64 * hz).min(1.0)
 }
