@@ -211,18 +211,22 @@ impl PairLaws {
     /// The rolling and spinning laws of the pair `(c1, c2)`, if its materials ask for any:
     /// the pair's own material's, else the attached sides' (both: combined by the pair's
     /// rule, like the friction law; an unattached side brings none).
-    pub fn rotation_laws(
-        &self,
+    pub fn rotation_laws<'a>(
+        &'a self,
         attached: &ColliderBits,
         colliders: &ColliderSet,
         (c1, c2): (ColliderHandle, ColliderHandle),
-    ) -> Option<crate::rolling::RotationLaws> {
-        let laws = |rolling: Option<Law>, spinning: Option<Law>| {
+    ) -> Option<crate::rolling::RotationLaws<'a>> {
+        use std::borrow::Cow;
+        let laws = |rolling: Option<Cow<'a, Law>>, spinning: Option<Cow<'a, Law>>| {
             (rolling.is_some() || spinning.is_some())
                 .then_some(crate::rolling::RotationLaws { rolling, spinning })
         };
         if let Some(m) = self.pairs.get(&pair_key(c1, c2)) {
-            return laws(m.rolling.clone(), m.spinning.clone());
+            return laws(
+                m.rolling.as_ref().map(Cow::Borrowed),
+                m.spinning.as_ref().map(Cow::Borrowed),
+            );
         }
         if !attached.contains(c1) && !attached.contains(c2) {
             return None;
@@ -237,10 +241,10 @@ impl PairLaws {
             Side::Plain(_) => None,
         };
         let (m1, m2) = (material(s1), material(s2));
-        let pick = |a: Option<&Law>, b: Option<&Law>| match (a, b) {
-            (Some(a), Some(b)) if a == b => Some(a.clone()),
-            (Some(a), Some(b)) => Some(a.combine_or_coulomb(b, rule).0),
-            (Some(x), None) | (None, Some(x)) => Some(x.clone()),
+        let pick = |a: Option<&'a Law>, b: Option<&'a Law>| match (a, b) {
+            (Some(a), Some(b)) if a == b => Some(Cow::Borrowed(a)),
+            (Some(a), Some(b)) => Some(Cow::Owned(a.combine_or_coulomb(b, rule).0)),
+            (Some(x), None) | (None, Some(x)) => Some(Cow::Borrowed(x)),
             (None, None) => None,
         };
         laws(

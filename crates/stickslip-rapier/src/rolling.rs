@@ -42,6 +42,7 @@ use crate::measure::{measure, world_centroid};
 #[cfg(not(dim2))]
 use rapier::math::Mat3;
 use rapier::prelude::*;
+use std::borrow::Cow;
 use std::collections::HashMap;
 use stickslip_core::contact::{ContactInput, ContactState, TangentBasis, step_contact};
 use stickslip_core::law::Law;
@@ -53,11 +54,12 @@ pub(crate) const JOINT_TAG: u128 = 0x5354_4943_4b53_4c49_505f_524f_4c4c_0001;
 /// A motor's damping: rigid (its row is a velocity constraint up to its torque cap).
 const RIGID: f32 = 1e9;
 
-/// The rolling and spinning laws of a pair.
+/// The rolling and spinning laws of a pair: the materials' own (borrowed), or two sides'
+/// combined.
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct RotationLaws {
-    pub rolling: Option<Law>,
-    pub spinning: Option<Law>,
+pub(crate) struct RotationLaws<'a> {
+    pub rolling: Option<Cow<'a, Law>>,
+    pub spinning: Option<Cow<'a, Law>>,
 }
 
 /// One resisting pair.
@@ -215,7 +217,7 @@ impl Rolling {
     /// Steps every touching pair `laws_of` gives rotation laws and sets its joint's motors
     /// for the coming step; removes the joints of pairs no longer touching.
     #[allow(clippy::too_many_arguments)]
-    pub fn before_step(
+    pub fn before_step<'a>(
         &mut self,
         joints: &mut ImpulseJointSet,
         substeps: usize,
@@ -225,7 +227,7 @@ impl Rolling {
         dt: f64,
         time: f64,
         stiffness_time: f64,
-        mut laws_of: impl FnMut(ColliderHandle, ColliderHandle) -> Option<RotationLaws>,
+        mut laws_of: impl FnMut(ColliderHandle, ColliderHandle) -> Option<RotationLaws<'a>>,
     ) {
         if !self.adopted {
             // Joints a restored snapshot brought: this modifier's states start afresh.
