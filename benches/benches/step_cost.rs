@@ -424,7 +424,10 @@ fn probe(spec: &str, mode: Mode) {
         b.step();
     }
     let ns = (thread_cpu() - t).as_nanos() as f64 / steps as f64;
-    println!("{scene_name} {variant_name}: {ns:.0} ns/step over {steps} steps");
+    let recycled = b.recycled().map_or(String::new(), |(q, n)| {
+        format!(", {q} of {n} colliders recycled")
+    });
+    println!("{scene_name} {variant_name}: {ns:.0} ns/step over {steps} steps{recycled}");
 }
 
 fn main() {

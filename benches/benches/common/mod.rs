@@ -588,6 +588,16 @@ impl Bench {
         b
     }
 
+    /// Of the colliders stickslip is attached to, how many it lets rapier recycle now, and
+    /// how many there are (`None` for the variants without stickslip).
+    pub fn recycled(&self) -> Option<(usize, usize)> {
+        let Stepper::StickSlip(m) = &self.stepper else {
+            return None;
+        };
+        let quiet = self.hooked.iter().filter(|&&h| m.is_recycled(h)).count();
+        Some((quiet, self.hooked.len()))
+    }
+
     /// One step (moves the kinematic driver first).
     #[inline]
     pub fn step(&mut self) {

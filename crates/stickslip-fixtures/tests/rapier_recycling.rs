@@ -9,9 +9,13 @@
 //! (both hold: `crates/stickslip-fixtures/tests/rapier_load_jump.rs`), sliding at g (sin θ − μ_k cos θ) after a jump to
 //! 1.2 μ_ba. The same box carried at 0.5 m/s by a kinematic platform (a pair that moves,
 //! recycled because rapier's own full update writes the same μ) is recycled while it holds and
-//! breaks away at μ_ba, where the hooked one does; so does a box stacked on another on a
-//! belt (a surface stickslip hooks at every step): the boxes' pair between them is recycled
-//! while it holds, the belt's pairs being hooked by the belt alone. A world saved while
+//! breaks away at μ_ba, where the hooked one does, also while it passes under a fixed beam it
+//! never touches; carried towards a wall, it is recycled on its way and every contact it
+//! makes with the wall is the law's from the first step. A pair the user filters (rapier
+//! updates it in full at every step) keeps the law's limit at every step. A box stacked on another on a belt
+//! (a surface stickslip hooks at every step) breaks away where a hooked one does too: the
+//! boxes' pair between them is recycled while it holds, the belt's pairs being hooked by the
+//! belt alone. A world saved while
 //! contacts are recycled,
 //! and piles on a heightfield and on a compound ground (composite contact patches, recycled or
 //! not), resume bit for bit. In 3D and in 2D (stickslip-fixtures2d: the platform carries
@@ -177,6 +181,24 @@ fn carried() -> (Vector, f32) {
 }
 
 fn break_away_on_a_moving_platform(mass: f32, dt: f64, recycling: bool, rate: f64) -> (f64, f64) {
+    let (world, m, b, _) = carried_box(mass, dt, recycling, None);
+    ramp_to_break_away(world, m, b, dt, rate, carried().0.x)
+}
+
+/// The box of [`break_away_on_a_moving_platform`] on its platform, both attached, settled
+/// level for 0.5 s; with `beam_gap`, also a fixed beam (attached, as long as the platform)
+/// that far above the box's top, returned.
+fn carried_box(
+    mass: f32,
+    dt: f64,
+    recycling: bool,
+    beam_gap: Option<f32>,
+) -> (
+    PhysicsWorld,
+    StickSlip,
+    RigidBodyHandle,
+    Option<ColliderHandle>,
+) {
     let mut world = PhysicsWorld::default();
     world.integration_parameters.dt = dt as f32;
     world.integration_parameters.contact_recycling = recycling;
@@ -199,20 +221,178 @@ fn break_away_on_a_moving_platform(mass: f32, dt: f64, recycling: bool, rate: f6
             .density(mass / cuboid3(0.25, 0.25, 0.25).1)
             .friction(MU_BA as f32),
     );
+    let beam = beam_gap.map(|gap| {
+        world.insert_collider(
+            cuboid3(under_half, 0.1, 200.0)
+                .0
+                .translation(v3(0.0, 0.5 + gap + 0.1, 0.0))
+                .friction(MU_BA as f32),
+            None,
+        )
+    });
     let mut m = StickSlip::new(FrictionMaterial::new(ep()));
-    for h in [under, on] {
+    for h in [Some(under), Some(on), beam].into_iter().flatten() {
         m.attach(&mut world.colliders, h, None);
     }
     set_slope(&mut world, 0.0);
     for _ in 0..(0.5 / dt) as usize {
         m.step(&mut world);
     }
-    ramp_to_break_away(world, m, b, dt, rate, v.x)
+    (world, m, b, beam)
 }
 
 #[test]
 fn a_carried_contact_recycles_and_breaks_away_where_a_hooked_one_does() {
     breaks_away_as_hooked("carried box", break_away_on_a_moving_platform);
+}
+
+/// How far above the carried box's top the beam of [`break_away_under_a_beam`] is (m): more
+/// than rapier's prediction distance, so the two never touch, little enough that rapier keeps
+/// the pair in its narrow phase.
+const BEAM_GAP: f32 = 0.04;
+
+/// [`break_away_on_a_moving_platform`] with the box passing under a fixed beam, `BEAM_GAP`
+/// above it all along.
+fn break_away_under_a_beam(mass: f32, dt: f64, recycling: bool, rate: f64) -> (f64, f64) {
+    let (world, m, b, _) = carried_box(mass, dt, recycling, Some(BEAM_GAP));
+    ramp_to_break_away(world, m, b, dt, rate, carried().0.x)
+}
+
+#[test]
+fn a_carried_contact_passing_under_a_beam_recycles_and_breaks_away_where_a_hooked_one_does() {
+    // The pair (box, beam) is in rapier's narrow phase, touches nowhere, and moves at
+    // 0.5 m/s: a pair like this kept the carried box hooked at every step before.
+    let (world, _, b, beam) = carried_box(1.0, 1.0 / 60.0, true, Some(BEAM_GAP));
+    let (on, beam) = (box_collider(&world, b), beam.unwrap());
+    let pair = world.narrow_phase.contact_pair(on, beam);
+    assert!(
+        pair.is_some(),
+        "the beam's pair is in rapier's narrow phase"
+    );
+    assert!(
+        pair.unwrap()
+            .solver_manifolds()
+            .iter()
+            .all(|m| m.data.solver_contacts.is_empty()),
+        "the beam touches nowhere"
+    );
+    breaks_away_as_hooked("box carried under a beam", break_away_under_a_beam);
+}
+
+#[test]
+fn a_carried_box_recycled_on_its_way_meets_a_wall_hooked() {
+    // A fixed wall ahead of the carried box, attached, with a grippier collider friction:
+    // rapier's own full update of the pair would write their combined 0.7 where the law
+    // writes at most μ_ba. The box is recycled while the wall is far; every contact it makes
+    // with the wall must still be the law's from its first step.
+    for dt in [1.0 / 60.0, 1.0 / 240.0] {
+        let (mut world, mut m, b, _) = carried_box(1.0, dt, true, None);
+        let on = box_collider(&world, b);
+        // 0.3 m ahead of the box's front face.
+        let ahead = carried().0.normalize();
+        let front = world.bodies[b].translation().dot(ahead) + 0.25;
+        let wall = world.insert_collider(
+            cuboid3(0.1, 0.5, 0.1)
+                .0
+                .translation(ahead * (front + 0.3 + 0.1) + v3(0.0, 0.5, 0.0))
+                .friction(0.9),
+            None,
+        );
+        // The wall spans the box's path: 1 m across it, 0.1 m thick along it.
+        #[cfg(not(dim2))]
+        world.colliders[wall].set_shape(SharedShape::cuboid(1.0, 0.5, 0.1));
+        m.attach(&mut world.colliders, wall, None);
+        let own = 0.5 * (MU_BA as f32 + 0.9);
+        let (mut recycled, mut touched) = (0, 0);
+        for _ in 0..(1.5 / dt) as usize {
+            m.step(&mut world);
+            recycled += usize::from(m.is_recycled(on));
+            let Some(pair) = world.narrow_phase.contact_pair(on, wall) else {
+                continue;
+            };
+            for manifold in pair.solver_manifolds() {
+                if manifold.data.solver_contacts.is_empty() {
+                    continue;
+                }
+                touched += 1;
+                assert!(
+                    manifold.data.friction <= MU_BA as f32,
+                    "dt {dt}: the wall's contact got rapier's own friction {} (combined {own})",
+                    manifold.data.friction
+                );
+            }
+        }
+        println!(
+            "dt {dt:.4}: recycled {recycled} steps, touched the wall in {touched} manifold steps"
+        );
+        assert!(
+            recycled > (0.2 / dt) as usize,
+            "the box was recycled on its way"
+        );
+        assert!(touched > 0, "the box reached the wall");
+    }
+}
+
+/// User hooks that keep every contact pair (a pair filter that filters nothing out: the
+/// default flags, which solve the contacts).
+struct KeepEveryPair;
+
+impl PhysicsHooks for KeepEveryPair {
+    fn filter_contact_pair(&self, _: &PairFilterContext) -> Option<SolverFlags> {
+        Some(SolverFlags::default())
+    }
+}
+
+#[test]
+fn a_pair_the_user_filters_is_never_left_to_rapiers_friction() {
+    // A box holding on a slope, on a ground with the user's pair-filter flag: rapier updates
+    // such a pair in full at every step, so with stickslip's flag off it would get rapier's
+    // friction, their collider coefficients combined: (0.3 + 0.9)/2 = 0.6. The law's limit is
+    // μ_ba = 0.5 with the ground attached, and with the ground unattached the box's μ_ba
+    // combined with the ground's coefficient (a Coulomb side): (0.5 + 0.9)/2 = 0.7. Either
+    // way no contact may carry rapier's own 0.6.
+    for attach_ground in [true, false] {
+        let mut world = PhysicsWorld::default();
+        let ground = world.insert_collider(
+            cuboid3(5.0, 0.1, 5.0)
+                .0
+                .translation(v3(0.0, -0.1, 0.0))
+                .friction(0.9),
+            None,
+        );
+        let (_, on) = world.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(v3(0.0, 0.25, 0.0))
+                .can_sleep(false),
+            cuboid3(0.25, 0.25, 0.25).0.friction(0.3),
+        );
+        let own = 0.6;
+        let mut m = StickSlip::with_hooks(FrictionMaterial::new(ep()), KeepEveryPair);
+        m.attach(&mut world.colliders, on, None);
+        if attach_ground {
+            m.attach(&mut world.colliders, ground, None);
+        }
+        let c = &mut world.colliders[ground];
+        c.set_active_hooks(c.active_hooks() | ActiveHooks::FILTER_CONTACT_PAIRS);
+        set_slope(&mut world, 0.2);
+        let mut touched = 0;
+        for step in 0..120 {
+            m.step(&mut world);
+            let pair = world.narrow_phase.contact_pair(on, ground).unwrap();
+            for manifold in pair.solver_manifolds() {
+                if manifold.data.solver_contacts.is_empty() {
+                    continue;
+                }
+                touched += 1;
+                assert!(
+                    (manifold.data.friction - own).abs() > 1e-3,
+                    "ground attached {attach_ground}, step {step}: rapier's own friction {}",
+                    manifold.data.friction
+                );
+            }
+        }
+        assert!(touched > 100, "the box rests on the ground");
+    }
 }
 
 /// Two flat boxes of `mass` stacked on a fixed belt whose surface moves at the platform's

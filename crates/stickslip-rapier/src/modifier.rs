@@ -608,6 +608,7 @@ impl<H> StickSlip<H> {
         self.clock.clustering = params.contact_clustering;
         *self.moving_surfaces.get_mut() = false;
         self.recycling.window = crate::rapier_compat::recycle_window(params);
+        self.recycling.prediction = params.prediction_distance();
         self.wake_before_step(bodies, colliders);
     }
 

@@ -27,6 +27,9 @@ pub(crate) struct Recycling {
     pub wake_all: bool,
     /// Recycle window (m) of the running step; 0 when rapier does not recycle.
     pub window: f32,
+    /// rapier's prediction distance (m) of the running step: shapes closer than this get
+    /// solver contacts.
+    pub prediction: f32,
     /// Scratch: the quiet set being decided (kept to reuse its memory).
     pub next: ColliderBits,
     /// Scratch: candidates to go quiet whose body is fixed or asleep (or who have none),

@@ -60,8 +60,10 @@
 //!   a solve only at the next step too, from the same impulses;
 //! - carries a manifold the hook did not write, with another limit than the law's (rapier
 //!   ran a full update without the hook: a new contact patch, a collider the user changed);
-//! - has nothing touching yet and a counterpart that moves towards the other by more than
-//!   [`MOTION_SHARE`] of the window a step (a contact may form);
+//! - has nothing touching yet, a counterpart that moves against the other by more than
+//!   [`MOTION_SHARE`] of the window a step, and their bounding boxes closer than rapier's
+//!   prediction distance plus twice that motion (a contact may form in the coming step; a
+//!   box carried past a wall or under a beam it does not reach stays recycled);
 //! - moves (a collider that rides, see above) and its combined friction differs from the
 //!   law's limit;
 //!
@@ -257,6 +259,23 @@ fn relative_motion(
         (v1 + Vector::new(-w1 * r.y, w1 * r.x), (w2 - w1).abs())
     };
     ((v2 - carried).length() + turn * reach2) * dt
+}
+
+/// The collider's hook flags besides `MODIFY_SOLVER_CONTACTS` (the user's pair filters): with
+/// any of them rapier updates every pair of the collider in full at every step.
+fn user_bits(c: &Collider) -> ActiveHooks {
+    c.active_hooks() - ActiveHooks::MODIFY_SOLVER_CONTACTS
+}
+
+/// Whether `c1` and `c2` stay farther apart than `reach` (m): the gap between their bounding
+/// boxes, a lower bound of the distance between the shapes, exceeds it.
+fn apart(colliders: &ColliderSet, c1: ColliderHandle, c2: ColliderHandle, reach: f32) -> bool {
+    let (Some(a), Some(b)) = (colliders.get(c1), colliders.get(c2)) else {
+        return false;
+    };
+    let (a, b) = (a.compute_aabb(), b.compute_aabb());
+    let gap = (a.mins - b.maxs).max(b.mins - a.maxs).max(Vector::ZERO);
+    gap.length() > reach
 }
 
 /// Whether the collider's body is fixed (or it has none), or, with `or_asleep`, asleep.
@@ -486,12 +505,17 @@ impl<H> StickSlip<H> {
         // 1. Colliders that may go (or stay) quiet: stickslip's flag, not marked by the hook,
         //    no source, a body that barely moves.
         let step_limit = MOTION_SHARE * window;
+        let prediction = self.recycling.prediction;
         for i in self.flagged.indices() {
             let Some((c, h)) = colliders.get_unknown_gen(i) else {
                 continue;
             };
-            // Only candidates need their motion: the pairs of the others stay hooked.
+            // Only candidates need their motion: the pairs of the others stay hooked. So
+            // does a collider with a hook flag of the user's besides stickslip's (a pair
+            // filter): rapier never recycles its pairs, and without stickslip's flag their
+            // full updates would get rapier's friction.
             if !self.attached.contains(h)
+                || !user_bits(c).is_empty()
                 || self.recycling.active.contains(h)
                 || self.vibrations.get(h).is_some()
                 || self.surfaces.get(h).is_some()
@@ -566,6 +590,17 @@ impl<H> StickSlip<H> {
                 }
                 continue;
             }
+            // A pair the user filters (a filter flag on an unattached collider) is updated
+            // in full at every step: it stays hooked.
+            let filtered = [c1, c2]
+                .into_iter()
+                .any(|h| colliders.get(h).is_some_and(|c| !user_bits(c).is_empty()));
+            if filtered {
+                for h in self.sides_to_hook(bodies, colliders, c1, c2) {
+                    next.set(h, false);
+                }
+                continue;
+            }
             let moves = |h: ColliderHandle| {
                 if flagged.contains(h) {
                     moving.contains(h)
@@ -595,10 +630,14 @@ impl<H> StickSlip<H> {
                 .filter(|m| !m.data.solver_contacts.is_empty());
             let quiet = match (touching.next(), touching.next()) {
                 // Nothing touches yet: a counterpart that moves towards the other may make a
-                // contact rapier would form without the hook.
+                // contact rapier would form without the hook, unless the two stay farther
+                // apart than rapier's prediction distance over the coming step, by twice
+                // their relative motion in a step (the pair is judged again after it).
                 (None, _) => {
-                    !pair_moves
-                        || relative_motion(bodies, colliders, c1, c2, dt as f32) <= step_limit
+                    !pair_moves || {
+                        let motion = relative_motion(bodies, colliders, c1, c2, dt as f32);
+                        motion <= step_limit || apart(colliders, c1, c2, prediction + 2.0 * motion)
+                    }
                 }
                 // One manifold (the common case): stepped in place, and kept if quiet (3.).
                 (Some(m), None) => {
