@@ -195,8 +195,9 @@ pub fn roll_inertia_ratio(world: &PhysicsWorld, body: RigidBodyHandle, r: f32) -
 pub enum Stack {
     /// A pyramid of 0.5 m cubes, `size` on the bottom row (size (size+1)/2 boxes).
     Pyramid,
-    /// A brick wall, `size` rows of bricks (0.4 × 0.2 × 0.2 m) in running bond: 6 and 5
-    /// bricks by turns, each row offset by half a brick.
+    /// A brick wall, `size` rows of bricks (0.4 × 0.2 × 0.2 m) in running bond: rows of 6
+    /// bricks, and between them rows offset by half a brick, of 5 bricks and a half brick at
+    /// each end.
     Wall,
     /// A plank tower: `size` crossed layers of 4 planks (1.6 × 0.1 × 0.2 m).
     #[cfg(not(dim2))]
@@ -239,17 +240,36 @@ pub fn stack(kind: Stack, size: usize, tan_theta: f64, mu: f32, dt: f64) -> Ordi
             }
         }
         Stack::Wall => {
-            let half = v3(0.2, 0.1, 0.1);
+            let (hx, hy, hz) = (0.2, 0.1, 0.1);
+            let half = v3(hx, hy, hz);
+            // Running bond: every other row is offset by half a brick, with a half brick at
+            // each end, so every brick rests with its centre of mass inside what carries it
+            // (a row of six offset bricks had its end bricks' centres of mass right over the
+            // edge below: plain rapier dropped one with contact recycling on and kept it with
+            // recycling off).
+            let half_brick = v3(hx / 2.0, hy, hz);
             for row in 0..size {
-                // Running bond: every other row is offset by half a brick and one brick
-                // shorter, so each of its bricks rests on two. A sixth brick there would have
-                // its centre of mass right over the edge of the one below (plain rapier drops
-                // it with contact recycling on and keeps it with recycling off).
-                let (offset, bricks) = if row % 2 == 0 { (0.0, 6) } else { (half.x, 5) };
-                for i in 0..bricks {
-                    let x = (i as f32 - 2.5) * 2.0 * half.x + offset;
-                    let y = half.y + row as f32 * 2.0 * half.y;
-                    add(&mut world, v3(x, y, 0.0), half);
+                let y = half.y + row as f32 * 2.0 * half.y;
+                if row % 2 == 0 {
+                    for i in 0..6 {
+                        add(
+                            &mut world,
+                            v3((i as f32 - 2.5) * 2.0 * half.x, y, 0.0),
+                            half,
+                        );
+                    }
+                } else {
+                    for i in 0..5 {
+                        add(
+                            &mut world,
+                            v3((i as f32 - 2.0) * 2.0 * half.x, y, 0.0),
+                            half,
+                        );
+                    }
+                    for side in [-1.0, 1.0] {
+                        let x = side * (5.0 * half.x + half_brick.x);
+                        add(&mut world, v3(x, y, 0.0), half_brick);
+                    }
                 }
             }
         }

@@ -12,7 +12,8 @@
 //! breaks away at μ_ba, where the hooked one does, also while it passes under a fixed beam it
 //! never touches; carried towards a wall, it is recycled on its way and every contact it
 //! makes with the wall is the law's from the first step. A pair the user filters (rapier
-//! updates it in full at every step) keeps the law's limit at every step. A box stacked on another on a belt
+//! updates it in full at every step) keeps the law's limit at every step, also after its box
+//! fell asleep and was woken. A box stacked on another on a belt
 //! (a surface stickslip hooks at every step) breaks away where a hooked one does too: the
 //! boxes' pair between them is recycled while it holds, the belt's pairs being hooked by the
 //! belt alone. A world saved while
@@ -351,7 +352,9 @@ fn a_pair_the_user_filters_is_never_left_to_rapiers_friction() {
     // μ_ba = 0.5 with the ground attached, and with the ground unattached the box's μ_ba
     // combined with the ground's coefficient (a Coulomb side): (0.5 + 0.9)/2 = 0.7. Either
     // way no contact may carry rapier's own 0.6.
-    for attach_ground in [true, false] {
+    // Also a box that falls asleep on the unattached ground and is woken by the user: rapier
+    // updates the pair in full again from the wake.
+    for (attach_ground, sleeps) in [(true, false), (false, false), (false, true)] {
         let mut world = PhysicsWorld::default();
         let ground = world.insert_collider(
             cuboid3(5.0, 0.1, 5.0)
@@ -360,13 +363,16 @@ fn a_pair_the_user_filters_is_never_left_to_rapiers_friction() {
                 .friction(0.9),
             None,
         );
-        let (_, on) = world.insert(
+        let (b, on) = world.insert(
             RigidBodyBuilder::dynamic()
                 .translation(v3(0.0, 0.25, 0.0))
-                .can_sleep(false),
+                .can_sleep(sleeps),
             cuboid3(0.25, 0.25, 0.25).0.friction(0.3),
         );
         let own = 0.6;
+        // The law's limit: μ_ba of the box's material with the ground's (the same material
+        // attached, a Coulomb side with the ground's coefficient unattached).
+        let law = if attach_ground { 0.5 } else { 0.7 };
         let mut m = StickSlip::with_hooks(FrictionMaterial::new(ep()), KeepEveryPair);
         m.attach(&mut world.colliders, on, None);
         if attach_ground {
@@ -376,7 +382,12 @@ fn a_pair_the_user_filters_is_never_left_to_rapiers_friction() {
         c.set_active_hooks(c.active_hooks() | ActiveHooks::FILTER_CONTACT_PAIRS);
         set_slope(&mut world, 0.2);
         let mut touched = 0;
-        for step in 0..120 {
+        let steps = if sleeps { 600 } else { 120 };
+        for step in 0..steps {
+            if sleeps && step == 540 {
+                assert!(world.bodies[b].is_sleeping(), "the box fell asleep");
+                world.bodies[b].wake_up(true);
+            }
             m.step(&mut world);
             let pair = world.narrow_phase.contact_pair(on, ground).unwrap();
             for manifold in pair.solver_manifolds() {
@@ -385,8 +396,9 @@ fn a_pair_the_user_filters_is_never_left_to_rapiers_friction() {
                 }
                 touched += 1;
                 assert!(
-                    (manifold.data.friction - own).abs() > 1e-3,
-                    "ground attached {attach_ground}, step {step}: rapier's own friction {}",
+                    (manifold.data.friction - law).abs() < 1e-6,
+                    "ground attached {attach_ground}, sleeps {sleeps}, step {step}: friction {} where the law \
+                     gives {law} (rapier's own: {own})",
                     manifold.data.friction
                 );
             }

@@ -608,7 +608,13 @@ impl<H> StickSlip<H> {
         self.clock.clustering = params.contact_clustering;
         *self.moving_surfaces.get_mut() = false;
         self.recycling.window = crate::rapier_compat::recycle_window(params);
-        self.recycling.prediction = params.prediction_distance();
+        // Contact detections inside a step (CCD passes) see velocities the judgement after
+        // a step cannot bound: no pair is then taken to stay apart.
+        self.recycling.prediction = if params.max_ccd_substeps > 1 {
+            f32::INFINITY
+        } else {
+            params.prediction_distance()
+        };
         self.wake_before_step(bodies, colliders);
     }
 

@@ -27,8 +27,9 @@ pub(crate) struct Recycling {
     pub wake_all: bool,
     /// Recycle window (m) of the running step; 0 when rapier does not recycle.
     pub window: f32,
-    /// rapier's prediction distance (m) of the running step: shapes closer than this get
-    /// solver contacts.
+    /// rapier's prediction distance (m) of the running step: shapes closer than this (beyond
+    /// their contact skins) get solver contacts. Infinite while rapier runs contact
+    /// detections inside a step (`max_ccd_substeps` > 1).
     pub prediction: f32,
     /// Scratch: the quiet set being decided (kept to reuse its memory).
     pub next: ColliderBits,

@@ -61,9 +61,16 @@
 //! - carries a manifold the hook did not write, with another limit than the law's (rapier
 //!   ran a full update without the hook: a new contact patch, a collider the user changed);
 //! - has nothing touching yet, a counterpart that moves against the other by more than
-//!   [`MOTION_SHARE`] of the window a step, and their bounding boxes closer than rapier's
-//!   prediction distance plus twice that motion (a contact may form in the coming step; a
-//!   box carried past a wall or under a beam it does not reach stays recycled);
+//!   [`MOTION_SHARE`] of the window a step, and their bounding boxes (with the contact
+//!   skins) closer than rapier's prediction distance plus twice that motion: a contact may
+//!   form in the coming step. rapier's detection at the start of the step sees the poses
+//!   judged here; a body with soft CCD (predicted further by its velocity) keeps such pairs
+//!   hooked, and with `max_ccd_substeps` > 1 (detections inside a step) the rule is off. A
+//!   box carried past a wall or under a beam it does not reach stays recycled. A pair rapier
+//!   has not found yet (its broad phase finds it a few centimetres early) is not judged: a
+//!   counterpart faster than that gets its first update unhooked, as before;
+//! - is filtered by the user (a pair-filter hook flag on either collider): rapier updates it
+//!   in full at every step;
 //! - moves (a collider that rides, see above) and its combined friction differs from the
 //!   law's limit;
 //!
@@ -244,7 +251,10 @@ fn relative_motion(
             }
             _ => (Vector::ZERO, AngVector::default(), c.position().translation),
         };
-        Some((v, w, centre, anchor(bodies, c).1))
+        // The turn is about the centre of mass: the reach from the body's origin, plus how
+        // far the centre of mass sits from it.
+        let (origin, reach) = anchor(bodies, c);
+        Some((v, w, centre, reach + (centre - origin.translation).length()))
     };
     let (Some((v1, w1, o1)), Some((v2, w2, o2, reach2))) =
         (frame(c1).map(|(v, w, o, _)| (v, w, o)), frame(c2))
@@ -267,13 +277,29 @@ fn user_bits(c: &Collider) -> ActiveHooks {
     c.active_hooks() - ActiveHooks::MODIFY_SOLVER_CONTACTS
 }
 
-/// Whether `c1` and `c2` stay farther apart than `reach` (m): the gap between their bounding
-/// boxes, a lower bound of the distance between the shapes, exceeds it.
-fn apart(colliders: &ColliderSet, c1: ColliderHandle, c2: ColliderHandle, reach: f32) -> bool {
+/// Whether `c1` and `c2` stay farther apart than `reach` (m) beyond their contact skins: the
+/// gap between their bounding boxes with the skins (a lower bound of the distance rapier
+/// compares with its prediction distance) exceeds it. Never for a body with soft CCD, whose
+/// pairs rapier predicts further by its velocity.
+fn apart(
+    bodies: &RigidBodySet,
+    colliders: &ColliderSet,
+    c1: ColliderHandle,
+    c2: ColliderHandle,
+    reach: f32,
+) -> bool {
     let (Some(a), Some(b)) = (colliders.get(c1), colliders.get(c2)) else {
         return false;
     };
-    let (a, b) = (a.compute_aabb(), b.compute_aabb());
+    let soft_ccd = |c: &Collider| {
+        c.parent()
+            .and_then(|h| bodies.get(h))
+            .is_some_and(|b| b.soft_ccd_prediction() > 0.0)
+    };
+    if soft_ccd(a) || soft_ccd(b) {
+        return false;
+    }
+    let (a, b) = (a.compute_collision_aabb(0.0), b.compute_collision_aabb(0.0));
     let gap = (a.mins - b.maxs).max(b.mins - a.maxs).max(Vector::ZERO);
     gap.length() > reach
 }
@@ -457,7 +483,9 @@ impl<H> StickSlip<H> {
                     !(drift(&q.pose(), &now, q.reach) + motion <= limit)
                 }
             });
-            if r.wake_all || r.wake.contains(h) || moved || !(r.window > 0.0) {
+            // A filter flag the user set between steps: rapier updates its pairs in full.
+            let filtered = !user_bits(c).is_empty();
+            if r.wake_all || r.wake.contains(h) || moved || filtered || !(r.window > 0.0) {
                 woken.set(h, true);
             }
         }
@@ -571,11 +599,21 @@ impl<H> StickSlip<H> {
         for pair in narrow_phase.contact_pairs() {
             let (c1, c2) = (pair.collider1, pair.collider2);
             let (a1, a2) = (self.attached.contains(c1), self.attached.contains(c2));
-            if !(a1 || a2)
-                || hooked_next(c1, a1, &next)
-                || hooked_next(c2, a2, &next)
-                || (is_still_now(c1) && is_still_now(c2))
-            {
+            let hooked = !(a1 || a2) || hooked_next(c1, a1, &next) || hooked_next(c2, a2, &next);
+            // A pair the user filters (a filter flag on an unattached collider) is updated
+            // in full at every step, also once its bodies sleep and are woken: it stays
+            // hooked.
+            let filtered = !hooked
+                && [c1, c2]
+                    .into_iter()
+                    .any(|h| colliders.get(h).is_some_and(|c| !user_bits(c).is_empty()));
+            if filtered {
+                for h in self.sides_to_hook(bodies, colliders, c1, c2) {
+                    next.set(h, false);
+                }
+                continue;
+            }
+            if hooked || (is_still_now(c1) && is_still_now(c2)) {
                 // A collider touching one hooked at every step (a vibrating plate, a belt)
                 // rests on it: it is not in flight.
                 for (h, other) in [(c1, c2), (c2, c1)] {
@@ -587,17 +625,6 @@ impl<H> StickSlip<H> {
                     {
                         carried.set(h, true);
                     }
-                }
-                continue;
-            }
-            // A pair the user filters (a filter flag on an unattached collider) is updated
-            // in full at every step: it stays hooked.
-            let filtered = [c1, c2]
-                .into_iter()
-                .any(|h| colliders.get(h).is_some_and(|c| !user_bits(c).is_empty()));
-            if filtered {
-                for h in self.sides_to_hook(bodies, colliders, c1, c2) {
-                    next.set(h, false);
                 }
                 continue;
             }
@@ -636,7 +663,8 @@ impl<H> StickSlip<H> {
                 (None, _) => {
                     !pair_moves || {
                         let motion = relative_motion(bodies, colliders, c1, c2, dt as f32);
-                        motion <= step_limit || apart(colliders, c1, c2, prediction + 2.0 * motion)
+                        motion <= step_limit
+                            || apart(bodies, colliders, c1, c2, prediction + 2.0 * motion)
                     }
                 }
                 // One manifold (the common case): stepped in place, and kept if quiet (3.).
