@@ -7,7 +7,8 @@
 //! swinging platforms, 1000 dominoes; a plane at ≈100k points with `STICKSLIP_BENCH_FULL=1`):
 //! - criterion (thread CPU time, see [`ThreadCpu`]): one `PhysicsWorld` step with plain rapier (`FrictionModel::Simplified`
 //!   and `::Coulomb`), a no-op contact hook, and stickslip with EP, Regul, Phys, and EP with a
-//!   time-resolved and an averaged vibration source;
+//!   time-resolved and an averaged vibration source (the rolling balls also with EP and
+//!   rolling and spinning resistance, `ep_rolling`);
 //! - an extra pass, outside criterion's timing, with a counting `#[global_allocator]`: contacts
 //!   really active (manifolds and points), heap allocations per step in steady state, live heap
 //!   bytes of each world (stickslip's state = EP world − no-op-hook world), and step times
@@ -162,6 +163,18 @@ fn filter() -> Option<String> {
 
 fn scenes(mode: Mode) -> Vec<(Scene, &'static [Variant])> {
     const SCALING: &[Variant] = &[Variant::PlainSimplified, Variant::NoopHook, Variant::Ep];
+    // The rolling balls also with rolling and spinning resistance (issue 41's cost).
+    const ROLLING: &[Variant] = &[
+        Variant::PlainSimplified,
+        Variant::PlainCoulomb,
+        Variant::NoopHook,
+        Variant::Ep,
+        Variant::Regul,
+        Variant::Phys,
+        Variant::EpVibResolved,
+        Variant::EpVibAveraged,
+        Variant::EpRolling,
+    ];
     let mut v: Vec<(Scene, &'static [Variant])> = vec![
         (Scene::plane_for_points(1_000), &Variant::ALL),
         (Scene::plane_for_points(10_000), &Variant::ALL),
@@ -181,7 +194,7 @@ fn scenes(mode: Mode) -> Vec<(Scene, &'static [Variant])> {
             },
             &Variant::ALL,
         ),
-        (Scene::Rolling { balls: 400 }, &Variant::ALL),
+        (Scene::Rolling { balls: 400 }, ROLLING),
         (Scene::Drum { cubes: 1000 }, SCALING),
         (Scene::Heightfield { bodies: 384 }, SCALING),
         (Scene::Compounds { bodies: 256 }, SCALING),
@@ -403,11 +416,11 @@ fn probe(spec: &str, mode: Mode) {
     let steps: usize = steps.parse().unwrap_or(100);
     let mut all = scenes(Mode::Full);
     all.retain(|(s, _)| s.name() == scene_name);
-    let Some(&(scene, _)) = all.first() else {
+    let Some(&(scene, variants)) = all.first() else {
         eprintln!("no scene {scene_name}");
         return;
     };
-    let Some(&variant) = Variant::ALL.iter().find(|v| v.name() == variant_name) else {
+    let Some(&variant) = variants.iter().find(|v| v.name() == variant_name) else {
         eprintln!("no variant {variant_name}");
         return;
     };

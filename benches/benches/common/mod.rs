@@ -210,10 +210,14 @@ pub enum Variant {
     EpVibResolved,
     /// stickslip EP with an averaged (20 kHz) normal vibration source on the ground.
     EpVibAveraged,
+    /// stickslip EP with rolling and spinning resistance (μ_r [`MU_ROLL`]) on every collider
+    /// (the rolling scene only).
+    EpRolling,
 }
 
 impl Variant {
-    /// All variants, plain rapier first.
+    /// The variants of the small scenes, plain rapier first ([`Variant::EpRolling`] is the
+    /// rolling scene's only).
     pub const ALL: [Variant; 8] = [
         Variant::PlainSimplified,
         Variant::PlainCoulomb,
@@ -236,6 +240,7 @@ impl Variant {
             Variant::Phys => "phys",
             Variant::EpVibResolved => "ep_vib_resolved",
             Variant::EpVibAveraged => "ep_vib_averaged",
+            Variant::EpRolling => "ep_rolling",
         }
     }
 
@@ -251,6 +256,22 @@ impl Variant {
 /// The elasto-plastic law of the benchmarks.
 pub fn ep_law() -> Law {
     Law::elasto_plastic(C, MU as f64, MU_MAX, Curve::constant(MU_MAX).unwrap()).unwrap()
+}
+
+/// Rolling and spinning resistance of [`Variant::EpRolling`]: small enough that balls rolled
+/// at 1 m/s keep rolling through a whole bench run (they slow by (5/7) μ_r g = 0.0035 m/s²).
+pub const MU_ROLL: f64 = 0.0005;
+
+/// The material of a stickslip variant.
+pub fn material_of(variant: Variant) -> FrictionMaterial {
+    let material = FrictionMaterial::new(law_of(variant));
+    if variant == Variant::EpRolling {
+        let resist =
+            Law::elasto_plastic(C, MU_ROLL, MU_ROLL, Curve::constant(MU_ROLL).unwrap()).unwrap();
+        material.with_rolling(resist.clone()).with_spinning(resist)
+    } else {
+        material
+    }
 }
 
 /// The law of a stickslip variant.
@@ -542,7 +563,7 @@ impl Bench {
                 Stepper::Noop(NoopHook)
             }
             _ => {
-                let mut m = StickSlip::new(FrictionMaterial::new(law_of(variant)));
+                let mut m = StickSlip::new(material_of(variant));
                 for &h in &hooked {
                     m.attach(&mut world.colliders, h, None);
                 }

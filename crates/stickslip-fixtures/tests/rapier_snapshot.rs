@@ -8,7 +8,9 @@
 //! of the ground, bouncing, landing, sleeping). A modifier restarted without the saved state
 //! diverges (so the comparison can fail). Garbage, truncated and mutated snapshot bytes, and
 //! inconsistent snapshot data, give an error and never a panic. Contacts recycled while
-//! quiet resume bit for bit as well. All in 3D and in 2D (stickslip-fixtures2d).
+//! quiet resume bit for bit as well, and so do balls with rolling and spinning resistance
+//! (the world's resisting joints kept with their states; without those states the run
+//! diverges). All in 3D and in 2D (stickslip-fixtures2d).
 
 use stickslip_core::law::{Law, Physical, Regularization, Regularized};
 use stickslip_core::sliding_curve::{Curve, StribeckDecay};
@@ -894,4 +896,145 @@ impl PhysicsHooks for ThreadsSeen {
             seen.insert(std::thread::current().id());
         }
     }
+}
+
+/// Balls with rolling (and, in 3D, spinning) resistance on an attached ground (a law whose
+/// rolling level falls with speed below its break-away): rolled at
+/// different speeds and spun, they roll, slow down and come to hold; one rolls off the
+/// ground's edge (its pair and joint go). Saved while they roll, the world resumes bit for
+/// bit: the resisting joints of the saved world are kept with their states. Restored without
+/// those states (as a file of an earlier build is), the run diverges: they matter.
+#[test]
+fn rolling_and_spinning_resistance_resumes_bit_identically() {
+    // A Stribeck-like resistance: break-away 0.05, rolling at 0.06 falling to 0.03 with the
+    // rolling speed (a fresh state holds at its capacity, where a rolling one is at 0.03).
+    let curve = Curve::stribeck(0.06, 0.03, 0.05, StribeckDecay::Exponential, 0.01).unwrap();
+    let resist = Law::elasto_plastic(1e4, 0.05, 0.06, curve).unwrap();
+    let build = || {
+        let mut world = PhysicsWorld::default();
+        let ground = world.insert_collider(cuboid3(4.0, 0.1, 4.0).0, None);
+        let mut bodies = Vec::new();
+        let mut colliders = vec![ground];
+        let r = 0.1f32;
+        for (i, v) in [0.2f32, 0.5, 0.9, 4.0].into_iter().enumerate() {
+            let (b, c) = world.insert(
+                RigidBodyBuilder::dynamic()
+                    .translation(v3(1.0 + 0.2 * i as f32, 0.1 + r, -1.0 + 0.6 * i as f32))
+                    .linvel(v3(v, 0.0, 0.0))
+                    .can_sleep(false),
+                ColliderBuilder::ball(r).density(1000.0),
+            );
+            // Rolling without slipping along +x (and, in 3D, a spin about the normal).
+            #[cfg(not(dim2))]
+            world.bodies[b].set_angvel(Vector::new(0.0, 3.0 * i as f32, -v / r), true);
+            #[cfg(dim2)]
+            world.bodies[b].set_angvel(-v / r, true);
+            bodies.push(b);
+            colliders.push(c);
+        }
+        let material = FrictionMaterial::new(law(Kind::Ep))
+            .with_rolling(resist.clone())
+            .with_spinning(resist.clone());
+        let mut m = StickSlip::new(material).with_read_back(stickslip_rapier::ReadBack::Contacts);
+        for h in &colliders {
+            m.attach(&mut world.colliders, *h, None);
+        }
+        (world, bodies, m)
+    };
+    let (mut world, bodies, mut m) = build();
+    for _ in 0..30 {
+        m.step(&mut world);
+    }
+    let joints = world.impulse_joints.iter().count();
+    assert_eq!(
+        joints, 4,
+        "every ball resists through its joint at the snapshot"
+    );
+    let bytes = {
+        let mut b = Vec::new();
+        WorldSnapshot::save_from(&world, &m, &mut b).unwrap();
+        b
+    };
+    let (mut w2, mut m2) = WorldSnapshot::load(bytes.as_slice())
+        .unwrap()
+        .restore(())
+        .unwrap();
+    // The same world, its modifier restored without the rolling states.
+    let (mut w3, mut m3) = {
+        let snap = WorldSnapshot::load(bytes.as_slice()).unwrap();
+        let m3 = restore_edited(&snap.friction, &snap.world.colliders, |json| {
+            json["rolling"] = serde_json::json!({"step": 0, "pairs": []});
+        })
+        .unwrap();
+        (snap.world, m3)
+    };
+    // Inconsistent rolling states are errors.
+    {
+        let snap = WorldSnapshot::load(bytes.as_slice()).unwrap();
+        let edits: [(&str, Edit); 3] = [
+            (
+                "pairs not in increasing collider order",
+                Box::new(|j| {
+                    let pairs = j["rolling"]["pairs"].as_array_mut().unwrap();
+                    let first = pairs[0].clone();
+                    pairs.push(first);
+                }),
+            ),
+            (
+                "unknown regime code",
+                Box::new(|j| j["rolling"]["pairs"][1]["roll"]["regime"] = 9.into()),
+            ),
+            (
+                "negative friction limit",
+                Box::new(|j| j["rolling"]["pairs"][2]["spin"]["limit"] = (-1.0).into()),
+            ),
+        ];
+        for (why, edit) in edits {
+            let err = restore_edited(&snap.friction, &snap.world.colliders, edit)
+                .err()
+                .unwrap_or_else(|| panic!("restored with {why}"));
+            assert!(err.contains(why), "{why}: {err}");
+        }
+    }
+    let bits = |w: &PhysicsWorld, m: &StickSlip| {
+        let mut out: Vec<u64> = Vec::new();
+        for b in &bodies {
+            out.extend(body_bits(&w.bodies[*b]).into_iter().map(u64::from));
+        }
+        for r in m.reports().unwrap() {
+            out.extend(report_bits(r));
+        }
+        out
+    };
+    let mut diverged = None;
+    let mut joints_seen = Vec::new();
+    for k in 0..600 {
+        for (w, m) in [(&mut world, &mut m), (&mut w2, &mut m2), (&mut w3, &mut m3)] {
+            m.step(w);
+        }
+        joints_seen.push(world.impulse_joints.iter().count());
+        assert!(
+            bits(&world, &m) == bits(&w2, &m2),
+            "the rolling world resumed differently at step {k}"
+        );
+        if diverged.is_none() && bits(&world, &m) != bits(&w3, &m3) {
+            diverged = Some(k);
+        }
+    }
+    // The fast ball left the ground: its joint went; the others hold.
+    assert_eq!(world.impulse_joints.iter().count(), 3);
+    let slowest = world.bodies[bodies[0]].linvel().length();
+    assert!(
+        slowest < 1e-3,
+        "the slowest ball still rolls at {slowest} m/s"
+    );
+    println!(
+        "identical over 600 steps; joints {:?}..{:?}; without the states diverged at step {diverged:?}",
+        joints_seen.first(),
+        joints_seen.last()
+    );
+    assert!(
+        diverged.is_some(),
+        "restored without its rolling states, the run did not diverge"
+    );
 }

@@ -788,7 +788,12 @@ impl<H> StickSlip<H> {
             // Its pose is kept current, so it is hooked again only if it stops and then
             // drifts.
             if moving.contains(h) || !r.quiet.contains(h) {
-                let (pose, reach) = anchor(bodies, c);
+                // A collider that stays quiet keeps its reach (a changed shape makes rapier
+                // update its pairs unhooked, which hooks it again).
+                let (pose, reach) = match r.poses.get(h) {
+                    Some(q) => (pose_of(bodies, c), q.reach),
+                    None => anchor(bodies, c),
+                };
                 r.poses.insert(h, QuietPose::new(&pose, reach));
             }
         }

@@ -81,6 +81,20 @@ struct Resisting {
     seen: u64,
 }
 
+/// A resisting pair as a snapshot keeps it (vectors x y z, z = 0 in 2D).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct ResistingImage {
+    pub colliders: (ColliderHandle, ColliderHandle),
+    pub joint: ImpulseJointHandle,
+    pub roll: ContactState,
+    pub spin: ContactState,
+    pub axis_x: [f32; 3],
+    pub normal: [f32; 3],
+    pub arm_roll: f32,
+    pub arm_spin: f32,
+    pub seen: u64,
+}
+
 /// Every resisting pair's joint and states.
 #[derive(Debug, Default)]
 pub(crate) struct Rolling {
@@ -230,16 +244,7 @@ impl Rolling {
         mut laws_of: impl FnMut(ColliderHandle, ColliderHandle) -> Option<RotationLaws<'a>>,
     ) {
         if !self.adopted {
-            // Joints a restored snapshot brought: this modifier's states start afresh.
-            let stale: Vec<_> = joints
-                .iter()
-                .filter(|(_, j)| j.data.user_data == JOINT_TAG)
-                .map(|(h, _)| h)
-                .collect();
-            for h in stale {
-                joints.remove(h, false);
-            }
-            self.adopted = true;
+            self.adopt(joints);
         }
         self.step += 1;
         let step = self.step;
@@ -468,14 +473,103 @@ impl Rolling {
             r.seen = step;
             self.pairs.insert((c1, c2), r);
         }
-        // Pairs that stopped touching (or resisting) lose their joint.
-        self.pairs.retain(|_, r| {
-            let keep = r.seen == step;
-            if !keep {
+        // Pairs that stopped touching (or resisting) lose their joint, in the pairs' order:
+        // the order of removals decides the handles of joints inserted later, and so the
+        // solver's order (a run and its resume from a snapshot stay bit-identical).
+        let mut gone: Vec<_> = self
+            .pairs
+            .iter()
+            .filter(|(_, r)| r.seen != step)
+            .map(|(&k, _)| k)
+            .collect();
+        gone.sort_unstable_by_key(|&(a, b)| (a.into_raw_parts(), b.into_raw_parts()));
+        for k in gone {
+            if let Some(r) = self.pairs.remove(&k) {
                 joints.remove(r.joint, false);
             }
-            keep
+        }
+    }
+
+    /// Takes over the joints of a restored world: those of the pairs this modifier was
+    /// restored with keep their states; every other joint of stickslip's is removed (a
+    /// snapshot without rolling states starts afresh).
+    fn adopt(&mut self, joints: &mut ImpulseJointSet) {
+        for r in self.pairs.values_mut() {
+            if joints
+                .get(r.joint)
+                .is_none_or(|j| j.data.user_data != JOINT_TAG)
+            {
+                // Not stickslip's joint (a world other than the snapshot's): a new one is
+                // inserted at the next step, with the pair's states.
+                r.joint = ImpulseJointHandle::invalid();
+            }
+        }
+        let kept: std::collections::HashSet<ImpulseJointHandle> =
+            self.pairs.values().map(|r| r.joint).collect();
+        let stale: Vec<_> = joints
+            .iter()
+            .filter(|(h, j)| j.data.user_data == JOINT_TAG && !kept.contains(h))
+            .map(|(h, _)| h)
+            .collect();
+        for h in stale {
+            joints.remove(h, false);
+        }
+        self.adopted = true;
+    }
+
+    /// The resisting pairs in collider order, with the step counter, for a snapshot.
+    pub fn images(&self) -> (u64, Vec<ResistingImage>) {
+        let mut images: Vec<ResistingImage> = self
+            .pairs
+            .iter()
+            .map(|(&(c1, c2), r)| ResistingImage {
+                colliders: (c1, c2),
+                joint: r.joint,
+                roll: r.roll,
+                spin: r.spin,
+                axis_x: crate::tangent::world(r.axis_x),
+                normal: crate::tangent::world(r.normal),
+                arm_roll: r.arm_roll,
+                arm_spin: r.arm_spin,
+                seen: r.seen,
+            })
+            .collect();
+        images.sort_unstable_by_key(|i| {
+            (
+                i.colliders.0.into_raw_parts(),
+                i.colliders.1.into_raw_parts(),
+            )
         });
+        (self.step, images)
+    }
+
+    /// The state [`Self::images`] gave: the joints of the world it is restored with are
+    /// taken over at the next step (see `adopt`).
+    pub fn from_images(step: u64, images: impl IntoIterator<Item = ResistingImage>) -> Self {
+        let pairs = images
+            .into_iter()
+            .map(|i| {
+                (
+                    i.colliders,
+                    Resisting {
+                        joint: i.joint,
+                        roll: i.roll,
+                        spin: i.spin,
+                        axis_x: crate::tangent::vector(i.axis_x),
+                        normal: crate::tangent::vector(i.normal),
+                        arm_roll: i.arm_roll,
+                        arm_spin: i.arm_spin,
+                        seen: i.seen,
+                    },
+                )
+            })
+            .collect();
+        Rolling {
+            pairs,
+            step,
+            adopted: false,
+            anchor: None,
+        }
     }
 
     /// Whether no pair resists rotation now.

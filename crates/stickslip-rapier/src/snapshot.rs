@@ -8,8 +8,9 @@
 //! (recycled, with the poses their drift is measured from), the per-contact friction state
 //! (law state, mean normal forces, and the slot/generation layout that rapier's manifolds
 //! point at through their `user_data`), the last solve measured at each contact patch of a
-//! composite shape (a clustered patch reads its next step from it), the clock, the totals and
-//! the last reports.
+//! composite shape (a clustered patch reads its next step from it), the rolling and spinning
+//! resistance of touching pairs (their states and which of the world's joints carry them),
+//! the clock, the totals and the last reports.
 //! A world resumed from both continues exactly as the uninterrupted one, bit for bit.
 //!
 //! ## Save and resume a world
@@ -74,6 +75,7 @@ use crate::contact_store::{
 use crate::measure::Measured;
 use crate::modifier::{Clock, ReadBack, StickSlip, StickSlipConfig};
 use crate::report::{ContactReport, WorldTotals};
+use crate::rolling::ResistingImage;
 use rapier::prelude::*;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use std::io::{Read, Write};
@@ -345,8 +347,36 @@ impl From<&LiveImage> for RecordSnapshot {
     }
 }
 
-impl RecordSnapshot {
-    fn to_live(&self) -> Result<LiveImage, SnapshotError> {
+/// The kernel's state of one contact (or one resisting axis pair, see [`RollingSnapshot`]).
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+struct StateSnapshot {
+    force: [f32; 3],
+    slide: f32,
+    limit: f32,
+    slip_speed: f32,
+    mean_normal_force: f32,
+    regime: u8,
+    forming: u8,
+}
+
+impl From<&ContactState> for StateSnapshot {
+    fn from(r: &ContactState) -> Self {
+        StateSnapshot {
+            force: r.force,
+            slide: r.slide,
+            limit: r.limit,
+            slip_speed: r.slip_speed,
+            mean_normal_force: r.mean_normal_force,
+            regime: r.regime,
+            forming: r.forming,
+        }
+    }
+}
+
+impl StateSnapshot {
+    /// The state, checked: finite, non-negative limit, slip speed and mean normal force,
+    /// known regime and forming codes.
+    fn to_state(self) -> Result<ContactState, SnapshotError> {
         let finite = self
             .force
             .iter()
@@ -355,7 +385,6 @@ impl RecordSnapshot {
                 self.limit,
                 self.slip_speed,
                 self.mean_normal_force,
-                self.warm_start_impulse,
             ])
             .all(|x| x.is_finite());
         if !finite {
@@ -385,20 +414,39 @@ impl RecordSnapshot {
                 format!("unknown regime code {}", self.regime),
             ));
         }
+        Ok(ContactState {
+            force: self.force,
+            slide: self.slide,
+            limit: self.limit,
+            slip_speed: self.slip_speed,
+            mean_normal_force: self.mean_normal_force,
+            regime: self.regime,
+            forming: self.forming,
+        })
+    }
+}
+
+impl RecordSnapshot {
+    fn to_live(&self) -> Result<LiveImage, SnapshotError> {
+        if !self.warm_start_impulse.is_finite() {
+            return Err(invalid("contact state", "a value is not finite"));
+        }
+        let state = StateSnapshot {
+            force: self.force,
+            slide: self.slide,
+            limit: self.limit,
+            slip_speed: self.slip_speed,
+            mean_normal_force: self.mean_normal_force,
+            regime: self.regime,
+            forming: self.forming,
+        }
+        .to_state()?;
         Ok(LiveImage {
             c1: self.c1,
             c2: self.c2,
             touched_odd: self.touched_odd,
             record: ContactRecord {
-                state: ContactState {
-                    force: self.force,
-                    slide: self.slide,
-                    limit: self.limit,
-                    slip_speed: self.slip_speed,
-                    mean_normal_force: self.mean_normal_force,
-                    regime: self.regime,
-                    forming: self.forming,
-                },
+                state,
                 inner_user_data: self.inner_user_data,
                 ahead: self.ahead,
                 #[cfg(rapier_035)]
@@ -660,6 +708,59 @@ pub struct StickSlipSnapshot {
     /// reads it (rapier rebuilds a clustered manifold every step, so its points cannot tell).
     #[serde(default)]
     patches: Vec<PatchSnapshot>,
+    /// Rolling and spinning resistance (absent in files of builds that did not keep it: the
+    /// restored world's resisting joints are then replaced, their states starting afresh).
+    #[serde(default)]
+    rolling: RollingSnapshot,
+}
+
+/// The pairs resisting rolling or spinning (see `rolling`) and the resistance's step count.
+#[derive(Debug, Clone, Default, Serialize, Deserialize)]
+struct RollingSnapshot {
+    step: u64,
+    pairs: Vec<ResistingSnapshot>,
+}
+
+/// One resisting pair: its joint in the world (arena index and generation), its rolling and
+/// spinning states, the axes and arms of its last step (vectors x y z, z = 0 in 2D).
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+struct ResistingSnapshot {
+    colliders: [Handle; 2],
+    joint: [u32; 2],
+    roll: StateSnapshot,
+    spin: StateSnapshot,
+    axis_x: [f32; 3],
+    normal: [f32; 3],
+    arm_roll: f32,
+    arm_spin: f32,
+    seen: u64,
+}
+
+impl ResistingSnapshot {
+    /// The pair, checked (finite axes and arms, valid states).
+    fn to_image(self) -> Result<ResistingImage, SnapshotError> {
+        let finite = self
+            .axis_x
+            .iter()
+            .chain(&self.normal)
+            .chain(&[self.arm_roll, self.arm_spin])
+            .all(|x| x.is_finite());
+        if !finite {
+            return Err(invalid("rolling resistance", "a value is not finite"));
+        }
+        let [index, generation] = self.joint;
+        Ok(ResistingImage {
+            colliders: (self.colliders[0].into(), self.colliders[1].into()),
+            joint: ImpulseJointHandle::from_raw_parts(index, generation),
+            roll: self.roll.to_state()?,
+            spin: self.spin.to_state()?,
+            axis_x: self.axis_x,
+            normal: self.normal,
+            arm_roll: self.arm_roll,
+            arm_spin: self.arm_spin,
+            seen: self.seen,
+        })
+    }
 }
 
 /// A quiet collider and the pose its drift is measured from.
@@ -845,6 +946,29 @@ impl<H> StickSlip<H> {
                 patches.sort_by_key(|p| p.user_data);
                 patches
             },
+            rolling: {
+                let (step, images) = self.rolling.images();
+                RollingSnapshot {
+                    step,
+                    pairs: images
+                        .iter()
+                        .map(|i| ResistingSnapshot {
+                            colliders: [i.colliders.0.into(), i.colliders.1.into()],
+                            joint: {
+                                let (index, generation) = i.joint.into_raw_parts();
+                                [index, generation]
+                            },
+                            roll: (&i.roll).into(),
+                            spin: (&i.spin).into(),
+                            axis_x: i.axis_x,
+                            normal: i.normal,
+                            arm_roll: i.arm_roll,
+                            arm_spin: i.arm_spin,
+                            seen: i.seen,
+                        })
+                        .collect(),
+                }
+            },
         }
     }
 
@@ -1001,6 +1125,21 @@ impl<H> StickSlip<H> {
                 },
             );
         }
+        let mut resisting = Vec::new();
+        for (k, p) in s.rolling.pairs.iter().enumerate() {
+            if k > 0 && s.rolling.pairs[k - 1].colliders >= p.colliders {
+                return Err(invalid(
+                    "rolling resistance",
+                    "pairs not in increasing collider order",
+                ));
+            }
+            let image = p.to_image()?;
+            // Only pairs of colliders in the set: others can never be stepped.
+            if colliders.contains(image.colliders.0) && colliders.contains(image.colliders.1) {
+                resisting.push(image);
+            }
+        }
+        m.rolling = crate::rolling::Rolling::from_images(s.rolling.step, resisting);
         // Combined laws are computed again.
         Ok(m)
     }
