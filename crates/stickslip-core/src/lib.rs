@@ -11,7 +11,8 @@
 //!   theory of friction under oscillation that the averaged vibration mode evaluates at run
 //!   time (Ψ_w(β), the compliant contact's μ̄ and static band, its self-drive).
 //! - [`contact`]: the per-contact kernel every engine adapter calls, and the vibration sources.
-//! - [`report`]: the contact read-back every engine adapter gives, one type for all.
+//! - [`report`]: the contact read-back every engine adapter gives, one type for all (and
+//!   one for the pairs that resist rolling or spinning).
 //! - [`profile`]: validated piecewise-linear force profiles F(t), such as the seed's Example 1.
 //!
 //! The reference simulators and the rest of Popov's theory (static friction, spring model,
@@ -29,6 +30,7 @@ pub mod popov;
 pub mod prelude;
 pub mod profile;
 pub mod report;
+mod rolling_report;
 pub mod sliding_curve;
 pub mod switch;
 pub mod vec2;

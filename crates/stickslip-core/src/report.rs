@@ -5,6 +5,8 @@
 use crate::switch::Regime;
 use serde::Serialize;
 
+pub use crate::rolling_report::RollingReport;
+
 /// One contact (a manifold, or one face of a composite shape) after a step. `C` names a
 /// collider the engine's way (rapier's `ColliderHandle`, a bevy `Entity`); `D` is the number
 /// of components of a world vector (3, or 2 in rapier2d). Fields may be added: read them, do

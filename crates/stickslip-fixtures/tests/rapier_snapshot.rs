@@ -1004,8 +1004,30 @@ fn rolling_and_spinning_resistance_resumes_bit_identically() {
         for r in m.reports().unwrap() {
             out.extend(report_bits(r));
         }
+        for r in m.rolling_reports(&w.impulse_joints) {
+            out.extend(
+                r.point
+                    .iter()
+                    .chain(&r.normal)
+                    .map(|x| u64::from(x.to_bits())),
+            );
+            out.extend(
+                r.rolling_torque
+                    .iter()
+                    .chain(&r.spinning_torque)
+                    .chain(&[r.rolling_arm, r.spinning_arm])
+                    .map(|x| u64::from(x.to_bits())),
+            );
+            out.extend([r.normal_force, r.rolling_limit, r.spinning_limit].map(f64::to_bits));
+            out.push(format!("{:?}{:?}", r.rolling, r.spinning).len() as u64);
+        }
         out
     };
+    // The reports of the step before the snapshot, read from the restored world.
+    assert!(
+        bits(&world, &m) == bits(&w2, &m2),
+        "restored reports differ"
+    );
     let mut diverged = None;
     let mut joints_seen = Vec::new();
     for k in 0..600 {

@@ -70,7 +70,7 @@ pub use modifier::{
     MAX_DT, MIN_DT, NotReadBack, ReadBack, SWEEP_INTERVAL, StickSlip, StickSlipConfig, valid_dt,
 };
 pub use pair_law::{MAX_COMBINATIONS, combine_rule};
-pub use report::{ContactReport, DIM, WorldTotals};
+pub use report::{ContactReport, DIM, RollingReport, WorldTotals};
 pub use snapshot::{SnapshotError, StickSlipSnapshot, WorldSnapshot};
 pub use stickslip_core::FrictionMaterial;
 pub use stickslip_core::contact::{

@@ -776,6 +776,15 @@ impl<H> StickSlip<H> {
         );
     }
 
+    /// What the pairs resisting rolling or spinning did in the last step (see
+    /// [`FrictionMaterial::with_rolling`]): regimes, torque caps and the torques the solver
+    /// applied (from the motors' impulses of their joints in `joints`, the world's
+    /// `impulse_joints`), one report per touching pair whose materials resist, in collider
+    /// order. Needs no [`ReadBack`]: it reads what the resistance keeps anyway.
+    pub fn rolling_reports(&self, joints: &ImpulseJointSet) -> Vec<crate::RollingReport> {
+        self.rolling.reports(joints)
+    }
+
     /// One step of `world` with this modifier (and no event handler of yours: pass one with
     /// [`Self::step_with_events`]).
     pub fn step(&mut self, world: &mut PhysicsWorld)

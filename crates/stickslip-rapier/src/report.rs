@@ -15,6 +15,10 @@ pub const DIM: usize = 2;
 /// engine).
 pub type ContactReport = stickslip_core::report::ContactReport<ColliderHandle, DIM>;
 
+/// One pair resisting rolling or spinning after a step, its colliders as rapier handles (see
+/// [`stickslip_core::report::RollingReport`]).
+pub type RollingReport = stickslip_core::report::RollingReport<ColliderHandle, DIM>;
+
 /// Totals over all stickslip contacts after a step.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
 pub struct WorldTotals {

@@ -37,8 +37,14 @@
 //!
 //! Rolling axes: x is kept along the rolling direction (or the last one while the contact
 //! holds), so each motor's own cap is the law's limit along the way the load acts.
+//!
+//! **Read-back.** [`crate::StickSlip::rolling_reports`] gives each resisting pair's regimes,
+//! torque caps and the torques the solver applied, from the motors' impulses after the step
+//! (no extra work in the step). **Snapshots** keep the pairs' states and joint handles: a
+//! restored world takes its joints over (see `adopt`).
 
 use crate::measure::{measure, world_centroid};
+use crate::report::{DIM, RollingReport};
 #[cfg(not(dim2))]
 use rapier::math::Mat3;
 use rapier::prelude::*;
@@ -66,34 +72,28 @@ pub(crate) struct RotationLaws<'a> {
 #[derive(Debug, Clone)]
 // 2D resists rolling only.
 #[cfg_attr(dim2, allow(dead_code))]
-struct Resisting {
-    joint: ImpulseJointHandle,
-    roll: ContactState,
-    spin: ContactState,
-    /// The world axes the motors acted along in the last step (x: first rolling axis, y: the
-    /// normal); zero before the first.
-    axis_x: Vector,
-    normal: Vector,
-    /// The arms of the last step (m).
-    arm_roll: f32,
-    arm_spin: f32,
-    /// The step it was last seen touching.
-    seen: u64,
-}
-
-/// A resisting pair as a snapshot keeps it (vectors x y z, z = 0 in 2D).
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct ResistingImage {
-    pub colliders: (ColliderHandle, ColliderHandle),
+pub(crate) struct Resisting {
     pub joint: ImpulseJointHandle,
     pub roll: ContactState,
     pub spin: ContactState,
-    pub axis_x: [f32; 3],
-    pub normal: [f32; 3],
+    /// The world axes the motors acted along in the last step (x: first rolling axis, y: the
+    /// normal); zero before the first.
+    pub axis_x: Vector,
+    pub normal: Vector,
+    /// The arms of the last step (m).
     pub arm_roll: f32,
     pub arm_spin: f32,
+    /// The step it was last seen touching.
     pub seen: u64,
+    /// The contact point and normal force (N) of the last step.
+    pub point: Vector,
+    pub normal_force: f64,
+    /// Whether the pair's materials resisted rolling and spinning in the last step.
+    pub resists: [bool; 2],
 }
+
+/// A resisting pair with its colliders.
+pub(crate) type ResistingPair = ((ColliderHandle, ColliderHandle), Resisting);
 
 /// Every resisting pair's joint and states.
 #[derive(Debug, Default)]
@@ -105,6 +105,10 @@ pub(crate) struct Rolling {
     /// The fixed body the joints of colliders without a body hang from (rapier joins
     /// bodies only).
     anchor: Option<RigidBodyHandle>,
+    /// The last step's length (s) and solver substeps: a motor's impulse over the step is
+    /// its last substep's times the substeps.
+    pub dt: f64,
+    pub substeps: usize,
 }
 
 /// The kernel's basis for a resistance about one axis (spinning, or rolling in 2D): the
@@ -247,6 +251,8 @@ impl Rolling {
             self.adopt(joints);
         }
         self.step += 1;
+        self.dt = dt;
+        self.substeps = substeps;
         let step = self.step;
         for pair in narrow_phase.contact_pairs() {
             if !pair.has_any_active_contact() {
@@ -344,6 +350,9 @@ impl Rolling {
                     arm_roll,
                     arm_spin,
                     seen: step,
+                    point: p,
+                    normal_force: 0.0,
+                    resists: [false; 2],
                 },
             };
             // The motors' impulses over the last step (torque on body 2: −λ along each axis).
@@ -471,6 +480,12 @@ impl Rolling {
             r.arm_roll = arm_roll;
             r.arm_spin = arm_spin;
             r.seen = step;
+            r.point = p;
+            r.normal_force = f_n;
+            r.resists = [
+                laws.rolling.is_some(),
+                cfg!(not(dim2)) && laws.spinning.is_some(),
+            ];
             self.pairs.insert((c1, c2), r);
         }
         // Pairs that stopped touching (or resisting) lose their joint, in the pairs' order:
@@ -518,58 +533,93 @@ impl Rolling {
     }
 
     /// The resisting pairs in collider order, with the step counter, for a snapshot.
-    pub fn images(&self) -> (u64, Vec<ResistingImage>) {
-        let mut images: Vec<ResistingImage> = self
-            .pairs
-            .iter()
-            .map(|(&(c1, c2), r)| ResistingImage {
-                colliders: (c1, c2),
-                joint: r.joint,
-                roll: r.roll,
-                spin: r.spin,
-                axis_x: crate::tangent::world(r.axis_x),
-                normal: crate::tangent::world(r.normal),
-                arm_roll: r.arm_roll,
-                arm_spin: r.arm_spin,
-                seen: r.seen,
-            })
-            .collect();
-        images.sort_unstable_by_key(|i| {
-            (
-                i.colliders.0.into_raw_parts(),
-                i.colliders.1.into_raw_parts(),
-            )
-        });
+    pub fn images(&self) -> (u64, Vec<ResistingPair>) {
+        let mut images: Vec<_> = self.pairs.iter().map(|(&k, r)| (k, r.clone())).collect();
+        images.sort_unstable_by_key(|((a, b), _)| (a.into_raw_parts(), b.into_raw_parts()));
         (self.step, images)
     }
 
-    /// The state [`Self::images`] gave: the joints of the world it is restored with are
-    /// taken over at the next step (see `adopt`).
-    pub fn from_images(step: u64, images: impl IntoIterator<Item = ResistingImage>) -> Self {
-        let pairs = images
-            .into_iter()
-            .map(|i| {
-                (
-                    i.colliders,
-                    Resisting {
-                        joint: i.joint,
-                        roll: i.roll,
-                        spin: i.spin,
-                        axis_x: crate::tangent::vector(i.axis_x),
-                        normal: crate::tangent::vector(i.normal),
-                        arm_roll: i.arm_roll,
-                        arm_spin: i.arm_spin,
-                        seen: i.seen,
-                    },
-                )
-            })
-            .collect();
+    /// The state [`Self::images`] gave, with the last step's length and substeps: the joints
+    /// of the world it is restored with are taken over at the next step (see `adopt`).
+    pub fn from_images(
+        step: u64,
+        dt: f64,
+        substeps: usize,
+        images: impl IntoIterator<Item = ResistingPair>,
+    ) -> Self {
         Rolling {
-            pairs,
+            pairs: images.into_iter().collect(),
             step,
             adopted: false,
             anchor: None,
+            dt,
+            substeps,
         }
+    }
+
+    /// What the pairs resisting now did in the last step (see [`RollingReport`]), their
+    /// torques from the motors' impulses in `joints`, in collider order.
+    pub fn reports(&self, joints: &ImpulseJointSet) -> Vec<RollingReport> {
+        let mut out: Vec<RollingReport> = self
+            .pairs
+            .iter()
+            .filter(|(_, r)| r.seen == self.step)
+            .map(|(&(c1, c2), r)| {
+                // The step's angular impulse along each motor's axis; torque on body 2: −λ.
+                let impulse = |axis: JointAxis| {
+                    joints
+                        .get(r.joint)
+                        .map_or(0.0, |j| j.data.motors[axis as usize].impulse)
+                        as f64
+                        * self.substeps as f64
+                };
+                let torque = |axis: JointAxis, along: Vector| {
+                    let t = if self.dt > 0.0 {
+                        -impulse(axis) / self.dt
+                    } else {
+                        0.0
+                    };
+                    along * t as f32
+                };
+                #[cfg(not(dim2))]
+                let (rolling_torque, spinning_torque) = {
+                    let z = r.axis_x.cross(r.normal);
+                    (
+                        (torque(JointAxis::AngX, r.axis_x) + torque(JointAxis::AngZ, z)).to_array(),
+                        torque(JointAxis::AngY, r.normal).to_array(),
+                    )
+                };
+                #[cfg(dim2)]
+                let (rolling_torque, spinning_torque) = {
+                    let t = torque(JointAxis::AngX, Vector::new(1.0, 0.0)).x;
+                    ([0.0, 0.0, t], [0.0; 3])
+                };
+                let [resists_rolling, resists_spinning] = r.resists;
+                let mut report = RollingReport::new(c1, c2);
+                report.point = crate::tangent::world(r.point)[..DIM]
+                    .try_into()
+                    .unwrap_or_default();
+                report.normal = crate::tangent::world(r.normal)[..DIM]
+                    .try_into()
+                    .unwrap_or_default();
+                report.normal_force = r.normal_force;
+                report.rolling_arm = r.arm_roll;
+                report.spinning_arm = r.arm_spin;
+                if resists_rolling {
+                    report.rolling = r.roll.regime();
+                    report.rolling_limit = r.roll.limit as f64;
+                    report.rolling_torque = rolling_torque;
+                }
+                if resists_spinning {
+                    report.spinning = r.spin.regime();
+                    report.spinning_limit = r.spin.limit as f64;
+                    report.spinning_torque = spinning_torque;
+                }
+                report
+            })
+            .collect();
+        out.sort_unstable_by_key(|r| (r.collider1.into_raw_parts(), r.collider2.into_raw_parts()));
+        out
     }
 
     /// Whether no pair resists rotation now.

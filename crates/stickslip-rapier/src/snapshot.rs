@@ -75,7 +75,7 @@ use crate::contact_store::{
 use crate::measure::Measured;
 use crate::modifier::{Clock, ReadBack, StickSlip, StickSlipConfig};
 use crate::report::{ContactReport, WorldTotals};
-use crate::rolling::ResistingImage;
+use crate::rolling::{Resisting, ResistingPair};
 use rapier::prelude::*;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use std::io::{Read, Write};
@@ -718,6 +718,11 @@ pub struct StickSlipSnapshot {
 #[derive(Debug, Clone, Default, Serialize, Deserialize)]
 struct RollingSnapshot {
     step: u64,
+    /// The last step's length (s) and solver substeps (the torques of the reports).
+    #[serde(default)]
+    dt: f64,
+    #[serde(default)]
+    substeps: u32,
     pairs: Vec<ResistingSnapshot>,
 }
 
@@ -734,32 +739,64 @@ struct ResistingSnapshot {
     arm_roll: f32,
     arm_spin: f32,
     seen: u64,
+    /// The contact point (m) and normal force (N) of the last step.
+    point: [f32; 3],
+    normal_force: f64,
+    /// Whether the materials resisted rolling and spinning in the last step.
+    resists: [bool; 2],
+}
+
+impl From<&ResistingPair> for ResistingSnapshot {
+    fn from(((c1, c2), r): &ResistingPair) -> Self {
+        let (index, generation) = r.joint.into_raw_parts();
+        ResistingSnapshot {
+            colliders: [(*c1).into(), (*c2).into()],
+            joint: [index, generation],
+            roll: (&r.roll).into(),
+            spin: (&r.spin).into(),
+            axis_x: crate::tangent::world(r.axis_x),
+            normal: crate::tangent::world(r.normal),
+            arm_roll: r.arm_roll,
+            arm_spin: r.arm_spin,
+            seen: r.seen,
+            point: crate::tangent::world(r.point),
+            normal_force: r.normal_force,
+            resists: r.resists,
+        }
+    }
 }
 
 impl ResistingSnapshot {
-    /// The pair, checked (finite axes and arms, valid states).
-    fn to_image(self) -> Result<ResistingImage, SnapshotError> {
+    /// The pair, checked (finite axes, arms, point and load; valid states).
+    fn to_pair(self) -> Result<ResistingPair, SnapshotError> {
         let finite = self
             .axis_x
             .iter()
             .chain(&self.normal)
+            .chain(&self.point)
             .chain(&[self.arm_roll, self.arm_spin])
-            .all(|x| x.is_finite());
+            .all(|x| x.is_finite())
+            && self.normal_force.is_finite();
         if !finite {
             return Err(invalid("rolling resistance", "a value is not finite"));
         }
         let [index, generation] = self.joint;
-        Ok(ResistingImage {
-            colliders: (self.colliders[0].into(), self.colliders[1].into()),
-            joint: ImpulseJointHandle::from_raw_parts(index, generation),
-            roll: self.roll.to_state()?,
-            spin: self.spin.to_state()?,
-            axis_x: self.axis_x,
-            normal: self.normal,
-            arm_roll: self.arm_roll,
-            arm_spin: self.arm_spin,
-            seen: self.seen,
-        })
+        Ok((
+            (self.colliders[0].into(), self.colliders[1].into()),
+            Resisting {
+                joint: ImpulseJointHandle::from_raw_parts(index, generation),
+                roll: self.roll.to_state()?,
+                spin: self.spin.to_state()?,
+                axis_x: crate::tangent::vector(self.axis_x),
+                normal: crate::tangent::vector(self.normal),
+                arm_roll: self.arm_roll,
+                arm_spin: self.arm_spin,
+                seen: self.seen,
+                point: crate::tangent::vector(self.point),
+                normal_force: self.normal_force,
+                resists: self.resists,
+            },
+        ))
     }
 }
 
@@ -950,23 +987,9 @@ impl<H> StickSlip<H> {
                 let (step, images) = self.rolling.images();
                 RollingSnapshot {
                     step,
-                    pairs: images
-                        .iter()
-                        .map(|i| ResistingSnapshot {
-                            colliders: [i.colliders.0.into(), i.colliders.1.into()],
-                            joint: {
-                                let (index, generation) = i.joint.into_raw_parts();
-                                [index, generation]
-                            },
-                            roll: (&i.roll).into(),
-                            spin: (&i.spin).into(),
-                            axis_x: i.axis_x,
-                            normal: i.normal,
-                            arm_roll: i.arm_roll,
-                            arm_spin: i.arm_spin,
-                            seen: i.seen,
-                        })
-                        .collect(),
+                    dt: self.rolling.dt,
+                    substeps: u32::try_from(self.rolling.substeps).unwrap_or(u32::MAX),
+                    pairs: images.iter().map(ResistingSnapshot::from).collect(),
                 }
             },
         }
@@ -1133,13 +1156,21 @@ impl<H> StickSlip<H> {
                     "pairs not in increasing collider order",
                 ));
             }
-            let image = p.to_image()?;
+            let (pair, r) = p.to_pair()?;
             // Only pairs of colliders in the set: others can never be stepped.
-            if colliders.contains(image.colliders.0) && colliders.contains(image.colliders.1) {
-                resisting.push(image);
+            if colliders.contains(pair.0) && colliders.contains(pair.1) {
+                resisting.push((pair, r));
             }
         }
-        m.rolling = crate::rolling::Rolling::from_images(s.rolling.step, resisting);
+        if !(s.rolling.dt.is_finite() && s.rolling.dt >= 0.0) {
+            return Err(invalid("rolling resistance", "dt not finite, or negative"));
+        }
+        m.rolling = crate::rolling::Rolling::from_images(
+            s.rolling.step,
+            s.rolling.dt,
+            s.rolling.substeps as usize,
+            resisting,
+        );
         // Combined laws are computed again.
         Ok(m)
     }

@@ -52,7 +52,7 @@ use rerun::{
 use std::collections::{HashMap, HashSet};
 use std::path::PathBuf;
 use stickslip_core::law::Regime;
-use stickslip_rapier::{ContactReport, StickSlip};
+use stickslip_rapier::{ContactReport, RollingReport, StickSlip};
 
 pub use rerun::sink::MemorySinkStorage;
 
@@ -278,6 +278,8 @@ pub struct RerunLogger {
     contact_names: HashMap<(ColliderHandle, ColliderHandle, usize), String>,
     body_series: HashSet<RigidBodyHandle>,
     force_scale: Option<f32>,
+    /// m per N·m of the rolling-resistance torque arrows (set from the first torques seen).
+    torque_scale: Option<f32>,
     logged: u64,
     static_done: bool,
 }
@@ -296,6 +298,7 @@ impl RerunLogger {
         RerunLogger {
             rec,
             force_scale: opts.force_scale,
+            torque_scale: None,
             opts: LogOptions {
                 every: opts.every.max(1),
                 ..opts
@@ -383,6 +386,7 @@ impl RerunLogger {
         }
         self.log_bodies(world)?;
         self.log_contacts(world, stickslip)?;
+        self.log_rolling(world, stickslip)?;
         self.log_vibrations(world, stickslip)?;
         self.logged += 1;
         Ok(())
@@ -583,25 +587,87 @@ impl RerunLogger {
             let k = seen.entry((r.collider1, r.collider2)).or_insert(0);
             let key = (r.collider1, r.collider2, *k);
             *k += 1;
-            let name = match self.contact_names.get(&key) {
-                Some(n) => n.clone(),
-                None => {
-                    if self.contact_names.len() >= self.opts.max_contact_series {
-                        continue;
-                    }
-                    let mut n = format!(
-                        "{}--{}",
-                        self.collider_name(world, r.collider1),
-                        self.collider_name(world, r.collider2)
-                    );
-                    if key.2 > 0 {
-                        n.push_str(&format!("_{}", key.2));
-                    }
-                    self.contact_names.insert(key, n.clone());
-                    n
-                }
+            let Some(name) = self.contact_name(world, key) else {
+                continue;
             };
             self.log_contact_series(&name, r)?;
+        }
+        Ok(())
+    }
+
+    /// The series name of a pair's `k`-th manifold, `None` once `max_contact_series` names
+    /// are taken.
+    fn contact_name(
+        &mut self,
+        world: &PhysicsWorld,
+        key: (ColliderHandle, ColliderHandle, usize),
+    ) -> Option<String> {
+        if let Some(n) = self.contact_names.get(&key) {
+            return Some(n.clone());
+        }
+        if self.contact_names.len() >= self.opts.max_contact_series {
+            return None;
+        }
+        let mut n = format!(
+            "{}--{}",
+            self.collider_name(world, key.0),
+            self.collider_name(world, key.1)
+        );
+        if key.2 > 0 {
+            n.push_str(&format!("_{}", key.2));
+        }
+        self.contact_names.insert(key, n.clone());
+        Some(n)
+    }
+
+    /// The pairs resisting rolling or spinning (`StickSlip::rolling_reports`): torque arrows
+    /// and per-pair series. Nothing is logged for a world without such pairs.
+    fn log_rolling<H: PhysicsHooks>(
+        &mut self,
+        world: &PhysicsWorld,
+        stickslip: &StickSlip<H>,
+    ) -> Result<(), LogError> {
+        let reports = stickslip.rolling_reports(&world.impulse_joints);
+        if reports.is_empty() && self.torque_scale.is_none() {
+            return Ok(());
+        }
+        let torque = |r: &RollingReport| {
+            let t = r.rolling_torque;
+            let s = r.spinning_torque;
+            [t[0] + s[0], t[1] + s[1], t[2] + s[2]]
+        };
+        // 0.3 m for the largest torque first seen (until one is, the arrows have no length).
+        if self.torque_scale.is_none_or(|s| s == 0.0) {
+            let max = reports
+                .iter()
+                .map(|r| norm3(torque(r).map(f64::from)))
+                .fold(0.0, f64::max);
+            self.torque_scale = Some(if max > 0.0 { (0.3 / max) as f32 } else { 0.0 });
+        }
+        let scale = self.torque_scale.unwrap_or(0.0);
+        let regime = |r: &RollingReport| r.rolling.or(r.spinning).unwrap_or(Regime::Sticking);
+        self.rec.log(
+            paths::ROLLING_ARROWS,
+            &Arrows3D::from_vectors(reports.iter().map(|r| torque(r).map(|t| t * scale)))
+                .with_origins(reports.iter().map(|r| r.point))
+                .with_colors(reports.iter().map(|r| regime_color(regime(r))))
+                .with_class_ids(reports.iter().map(|r| regime_class(regime(r)))),
+        )?;
+        for r in &reports {
+            let Some(name) = self.contact_name(world, (r.collider1, r.collider2, 0)) else {
+                continue;
+            };
+            let values = [
+                norm3(r.rolling_torque.map(f64::from)),
+                norm3(r.spinning_torque.map(f64::from)),
+                r.effective_rolling_mu(),
+                r.effective_spinning_mu(),
+            ];
+            for (k, (series, value)) in paths::ROLLING_SERIES.iter().zip(values).enumerate() {
+                let path = paths::contact_series(&name, series);
+                self.style(&path, &format!("{name} {series}"), palette(k + 2))?;
+                self.scalar(&path, value)?;
+            }
         }
         Ok(())
     }

@@ -8,10 +8,12 @@
 //! | `world/contacts` | `AnnotationContext` (regime legend) | static |
 //! | `world/contacts/points` | `Points3D`, colored and classed by regime (sticking / stick-slip / sliding) | every logged step (empty when there are no contacts) |
 //! | `world/contacts/friction` | `Arrows3D`: friction force on the second body, from the contact point, scaled by the logger's `force_scale` (m/N) | every logged step |
+//! | `world/contacts/rolling` | `Arrows3D`: rolling- plus spinning-resistance torque on the second body of each resisting pair, from the contact point, 0.3 m for the largest torque first seen; colored and classed by the rolling regime (else the spinning one) | logged steps from the first with a resisting pair |
 //! | `series/world/{sticking,stick_slip,sliding}` | `Scalars`: number of contacts per regime | every logged step |
 //! | `series/world/{normal_force,friction_force,dissipated_power,dissipated_energy}` | `Scalars` (N, N, W, J) | every logged step |
 //! | `series/bodies/{body}/{speed,displacement,normal_force,friction_force,effective_mu,dissipated_power}` | `Scalars` per non-fixed body, summed over the body's contacts | every logged step (first `max_body_series` bodies) |
 //! | `series/contacts/{pair}/{mu,slip_speed,normal_force,effective_mu,dissipated_power}` | `Scalars` per contact manifold | logged steps where the contact exists (first `max_contact_series` contacts) |
+//! | `series/contacts/{pair}/{rolling_torque,spinning_torque,rolling_mu,spinning_mu}` | `Scalars` per pair resisting rolling or spinning: torque magnitudes (N·m) and the coefficients used, \|torque\| / (arm · F_n) | logged steps where the pair resists |
 //! | `series/vibration/{collider}/signal` | `Scalars`: normalized waveform w(f t + φ) of the collider's vibration source | every logged step |
 //!
 //! Every `series/...` entity gets its `SeriesLines` style (name, color) logged once, statically.
@@ -39,6 +41,8 @@ pub const CONTACTS: &str = "world/contacts";
 pub const CONTACT_POINTS: &str = "world/contacts/points";
 /// Friction force arrows.
 pub const FRICTION_ARROWS: &str = "world/contacts/friction";
+/// Rolling- and spinning-resistance torque arrows.
+pub const ROLLING_ARROWS: &str = "world/contacts/rolling";
 
 /// Per-world series names under [`WORLD_SERIES`].
 pub const WORLD_SERIES: &str = "series/world";
@@ -59,6 +63,13 @@ pub const BODY_SERIES: [&str; 6] = [
     "friction_force",
     "effective_mu",
     "dissipated_power",
+];
+/// Series per pair resisting rolling or spinning (beside its contact's series).
+pub const ROLLING_SERIES: [&str; 4] = [
+    "rolling_torque",
+    "spinning_torque",
+    "rolling_mu",
+    "spinning_mu",
 ];
 /// Series per contact.
 pub const CONTACT_SERIES: [&str; 5] = [

@@ -6,11 +6,13 @@
 //! equal to the reported regimes, regime-count series equal to the world totals, the
 //! dissipated-energy series ending at the runner's total, body displacement series equal to the
 //! bodies' displacement, the vibration series equal to the source's waveform at each logged
-//! time, and per-contact series capped at the configured number. Holds for the `.rrd` file sink
+//! time, and per-contact series capped at the configured number; rolling-resistance torque
+//! arrows and series equal to the modifier's rolling reports. Holds for the `.rrd` file sink
 //! and the in-memory sink.
 
 use rapier3d::prelude::*;
 use stickslip_core::law::{Coulomb, Law, Regime};
+use stickslip_core::sliding_curve::Curve;
 use stickslip_rapier::{FrictionMaterial, StickSlip};
 use stickslip_rerun::inspect::{self, RrdContents};
 use stickslip_rerun::{LogOptions, RerunLogger, Sink, paths};
@@ -340,6 +342,8 @@ fn balls_and_meshes_are_logged_as_such() {
     assert!(mesh.static_components.contains("Mesh3D:vertex_positions"));
     let ground_name = logger.body_name(ground);
     assert!(contents.entity(&paths::body(&ground_name)).is_some());
+    // Nothing resists rolling here: no torque arrows.
+    assert!(contents.entity(paths::ROLLING_ARROWS).is_none());
     // The resting ball has one contact from the first step on.
     let points = contents.entity(paths::CONTACT_POINTS).unwrap();
     assert_eq!(points.steps, vec![1, 2, 3, 4, 5]);
@@ -349,4 +353,68 @@ fn balls_and_meshes_are_logged_as_such() {
             .skip(1)
             .all(|&n| n == 1)
     );
+}
+
+/// A ball rolling down a slope against rolling resistance: one torque arrow per logged step,
+/// classed by its rolling regime, and the pair's torque series equal to what
+/// `StickSlip::rolling_reports` gave at each step (the coefficient used at the law's μ_r). A
+/// world without rolling resistance logs no torque arrows.
+#[test]
+fn rolling_resistance_torques_are_logged() {
+    let mu_r = 0.02;
+    let mut world = PhysicsWorld::default();
+    let tan = 2.0 * mu_r;
+    let theta = f64::atan(tan) as f32;
+    world.gravity = Vector::new(9.81 * theta.sin(), -9.81 * theta.cos(), 0.0);
+    let gc = world.insert_collider(ColliderBuilder::cuboid(50.0, 0.1, 5.0), None);
+    let (ball, bc) = world.insert(
+        RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 0.2, 0.0)),
+        ColliderBuilder::ball(0.1).density(1000.0),
+    );
+    let resist = Law::elasto_plastic(1e4, mu_r, mu_r, Curve::constant(mu_r).unwrap()).unwrap();
+    let material = FrictionMaterial::new(Law::Coulomb(Coulomb::new(0.5).unwrap()))
+        .with_rolling(resist.clone())
+        .with_spinning(resist);
+    let mut friction =
+        StickSlip::new(material).with_read_back(stickslip_rapier::ReadBack::Contacts);
+    friction.attach(&mut world.colliders, gc, None);
+    friction.attach(&mut world.colliders, bc, None);
+    let (rec, memory) = stickslip_rerun::open("rolling", &Sink::Memory).unwrap();
+    let mut logger = RerunLogger::new(rec, LogOptions::default());
+    logger.set_body_name(ball, "ball");
+    let mut torques = Vec::new();
+    for k in 1..=30 {
+        friction.step(&mut world);
+        let reports = friction.rolling_reports(&world.impulse_joints);
+        if let [r] = reports[..] {
+            let t = r.rolling_torque;
+            torques.push(((t[0] * t[0] + t[1] * t[1] + t[2] * t[2]) as f64).sqrt());
+        }
+        logger.log_step(k, &world, &friction).unwrap();
+    }
+    logger.flush().unwrap();
+    let contents = inspect::read_rrd_bytes(&memory.unwrap().drain_as_bytes().unwrap()).unwrap();
+    let arrows = contents.entity(paths::ROLLING_ARROWS).unwrap();
+    assert_eq!(arrows.steps.len(), torques.len());
+    assert!(arrows.instances["Arrows3D:vectors"].iter().all(|&n| n == 1));
+    // Rolling down above break-away: the law rolls (its sliding regime) once formed.
+    let last = arrows.class_ids.last().unwrap();
+    assert_eq!(last, &vec![stickslip_rerun::regime_class(Regime::Sliding)]);
+    let path = contents
+        .children("series/contacts")
+        .into_iter()
+        .find(|p| p.ends_with("/rolling_torque") && p.contains("ball"))
+        .expect("the ball's pair has a rolling torque series")
+        .to_string();
+    let series = contents.entity(&path).unwrap();
+    assert!(
+        close(&series.scalars, &torques, 1e-6),
+        "{:?} vs {torques:?}",
+        series.scalars
+    );
+    let used = contents
+        .entity(&path.replace("/rolling_torque", "/rolling_mu"))
+        .unwrap();
+    let last_mu = *used.scalars.last().unwrap();
+    assert!((last_mu / mu_r - 1.0).abs() < 0.02, "μ_r used {last_mu}");
 }
