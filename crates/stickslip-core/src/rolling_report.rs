@@ -31,7 +31,8 @@ pub struct RollingReport<C, const D: usize = 3> {
     /// Spinning arm a (m): the spread of the contact's points, or R for a single point.
     pub spinning_arm: f32,
     /// Regime of the rolling law this step; `None` when the pair's materials do not resist
-    /// rolling.
+    /// rolling or the contact cannot roll (a patch of points, a box on its face: its normal
+    /// forces hold every turn).
     pub rolling: Option<Regime>,
     /// Coefficient μ_r of the torque cap given to the solver this step (torque ≤ μ_r R F_n).
     pub rolling_limit: f64,

@@ -29,6 +29,14 @@
 //! fixed body counts as infinitely large); a is the spread of the contact's points (their
 //! largest distance from their centroid), or R for a single point.
 //!
+//! **What rolls.** A contact of one point (a ball) rolls about any axis of the contact plane;
+//! a line of points (a cylinder on its side) only about the line: turning about the axis
+//! across it lifts one end, which the contact's normal rows hold with the line's lever; a
+//! patch (a box on its face) not at all. An axis counts as held by the normal rows when the
+//! points reach farther across it than μ R (the law's break-away torque μ R F_n is then
+//! within the normal forces' own moment); its motor is left free, so the normal rows carry
+//! that turn alone, as in plain rapier.
+//!
 //! A collider without a body (a static ground) has its joint on a fixed body at the origin
 //! that stickslip adds to the world once: rapier joins bodies only.
 //!
@@ -51,7 +59,7 @@ use rapier::prelude::*;
 use std::borrow::Cow;
 use std::collections::HashMap;
 use stickslip_core::contact::{ContactInput, ContactState, TangentBasis, step_contact};
-use stickslip_core::law::Law;
+use stickslip_core::law::{FrictionLaw, Law};
 
 /// Marks stickslip's joints (`GenericJoint::user_data`), so that a world restored from a
 /// snapshot does not keep them twice.
@@ -207,6 +215,73 @@ fn inv_inertia(bodies: &RigidBodySet, h: Option<RigidBodyHandle>) -> f32 {
     }
 }
 
+/// How a contact's points let its bodies roll against each other.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Freedom {
+    /// A point (or points within the lever): about any axis of the contact plane.
+    Any,
+    /// A line of points (a cylinder on its side): only about the line; turning about the
+    /// axis across it lifts one end, which the contact's normal rows hold.
+    #[cfg_attr(dim2, allow(dead_code))]
+    About(Vector),
+    /// A patch (a box on its face): not at all; the normal rows hold every turn.
+    Blocked,
+}
+
+/// How the points of `m` (their centroid `p`, normal `n`) let the bodies roll, and their
+/// spread (largest distance from `p`), or `None` if a collider is gone. An axis is blocked
+/// when the points reach farther than `lever` across it: the normal forces then carry the
+/// law's break-away torque (μ R F_n = F_n × lever) on their own, and a motor beside them
+/// would only share their load.
+fn rolling_freedom(
+    m: &ContactManifold,
+    colliders: &ColliderSet,
+    (c1, c2): (ColliderHandle, ColliderHandle),
+    p: Vector,
+    n: Vector,
+    lever: f32,
+) -> Option<(Freedom, f32)> {
+    let pose = |h: ColliderHandle| colliders.get(h).map(|c| *c.position());
+    let (pos1, pos2) = (pose(c1)?, pose(c2)?);
+    let (pos1, pos2) = (
+        m.subshape_pos1().map_or(pos1, |s| pos1 * *s),
+        m.subshape_pos2().map_or(pos2, |s| pos2 * *s),
+    );
+    // In the contact plane, from the centroid.
+    let offsets = || {
+        m.data
+            .solver_contacts
+            .iter()
+            .filter_map(|c| m.points.get(c.contact_indices()[0] as usize))
+            .map(move |q| {
+                let d = (pos1 * q.local_p1 + pos2 * q.local_p2) * 0.5 - p;
+                d - n * n.dot(d)
+            })
+    };
+    let farthest = offsets().fold(Vector::ZERO, |a, d| {
+        if d.length_squared() > a.length_squared() {
+            d
+        } else {
+            a
+        }
+    });
+    let spread = farthest.length();
+    if !(spread > lever) {
+        return Some((Freedom::Any, spread));
+    }
+    #[cfg(not(dim2))]
+    {
+        // Points along the farthest one's line, within the lever across it: a line.
+        let line = farthest / spread;
+        let across = n.cross(line);
+        let width = offsets().fold(0.0f32, |a, d| a.max(d.dot(across).abs()));
+        if !(width > lever) {
+            return Some((Freedom::About(line), spread));
+        }
+    }
+    Some((Freedom::Blocked, spread))
+}
+
 impl Rolling {
     /// The body of a collider, or for one without, the anchor: a fixed body at the origin
     /// that stickslip adds to the world once (marked with [`JOINT_TAG`] as its `user_data`,
@@ -304,32 +379,28 @@ impl Rolling {
             if !(arm_roll.is_finite() && arm_roll > 0.0) {
                 continue;
             }
+            // The contact's points (world, midway between the surfaces) and how they let the
+            // bodies roll: a lever the law's break-away torque fits in makes an axis blocked.
+            let lever = laws
+                .rolling
+                .as_ref()
+                .map_or(0.0, |l| l.static_coefficient() as f32 * arm_roll);
+            let Some((freedom, spread)) = rolling_freedom(m, colliders, (c1, c2), p, n, lever)
+            else {
+                continue;
+            };
             #[cfg(not(dim2))]
-            let arm_spin = {
-                let spread = {
-                    let pose = |h: ColliderHandle| colliders.get(h).map(|c| *c.position());
-                    let (Some(pos1), Some(pos2)) = (pose(c1), pose(c2)) else {
-                        continue;
-                    };
-                    let (pos1, pos2) = (
-                        m.subshape_pos1().map_or(pos1, |s| pos1 * *s),
-                        m.subshape_pos2().map_or(pos2, |s| pos2 * *s),
-                    );
-                    m.data
-                        .solver_contacts
-                        .iter()
-                        .filter_map(|c| m.points.get(c.contact_indices()[0] as usize))
-                        .map(|q| ((pos1 * q.local_p1 + pos2 * q.local_p2) * 0.5 - p).length())
-                        .fold(0.0f32, f32::max)
-                };
-                if spread > 1e-3 * arm_roll {
-                    spread
-                } else {
-                    arm_roll
-                }
+            let arm_spin = if spread > 1e-3 * arm_roll {
+                spread
+            } else {
+                arm_roll
             };
             #[cfg(dim2)]
-            let arm_spin = arm_roll;
+            let arm_spin = {
+                // No spinning in 2D: its arm is only reported.
+                let _ = spread;
+                arm_roll
+            };
             let law_step = Step {
                 normal_force: f_n,
                 dt,
@@ -378,16 +449,23 @@ impl Rolling {
                 );
                 let w = w2 - w1;
                 let w_spin = n.dot(w);
-                let w_roll = w - n * w_spin;
-                // Rolling axes: along the rolling, else the last ones carried onto this plane.
+                let w_roll = match freedom {
+                    Freedom::Any => w - n * w_spin,
+                    // Only the turn about the line rolls.
+                    Freedom::About(d) => d * d.dot(w),
+                    Freedom::Blocked => Vector::ZERO,
+                };
+                // Rolling axes: along the rolling (a line contact's own), else the last ones
+                // carried onto this plane.
                 let roll_speed = w_roll.length() * arm_roll;
                 let old_basis = kernel_basis(r.axis_x, r.normal);
-                let axis_x = if roll_speed > 1e-6 {
+                let axis_x = match freedom {
+                    Freedom::About(d) if d.dot(r.axis_x) < 0.0 => -d,
+                    Freedom::About(d) => d,
                     // The rolling direction of the contact point is ω × n: its axis is ω's own
                     // tangential direction.
-                    w_roll / w_roll.length()
-                } else {
-                    tangent_axis(r.axis_x, n)
+                    _ if roll_speed > 1e-6 => w_roll / w_roll.length(),
+                    _ => tangent_axis(r.axis_x, n),
                 };
                 let basis = kernel_basis(axis_x, n);
                 // The last solve's resisting "friction" as a world vector, re-expressed in this
@@ -400,7 +478,10 @@ impl Rolling {
                     basis.project(old)
                 };
                 let mut torque_roll = (0.0, [0.0f64; 2]);
-                if let Some(law) = &laws.rolling {
+                if freedom == Freedom::Blocked {
+                    // A patch does not roll: its normal rows hold the turn, with their lever.
+                    r.roll = ContactState::default();
+                } else if let Some(law) = &laws.rolling {
                     let slip = basis.project((w_roll * arm_roll).to_array());
                     let out = step_contact(
                         &mut r.roll,
@@ -437,7 +518,13 @@ impl Rolling {
                     ),
                     (
                         JointAxis::AngZ,
-                        torque_roll.0,
+                        // A line rolls about itself only: the turn across it is the normal
+                        // rows' (free here).
+                        if matches!(freedom, Freedom::Any) {
+                            torque_roll.0
+                        } else {
+                            0.0
+                        },
                         -torque_roll.1[1] / arm_roll as f64,
                     ),
                     (JointAxis::AngY, torque_spin.0, torque_spin.1),
@@ -459,7 +546,15 @@ impl Rolling {
                 let _ = &laws.spinning;
                 let w = bodies.get(b2).map_or(0.0, |b| b.angvel())
                     - bodies.get(b1).map_or(0.0, |b| b.angvel());
-                let (max, target) = laws.rolling.as_ref().map_or((0.0, 0.0), |law| {
+                if freedom == Freedom::Blocked {
+                    // A patch does not roll: its normal rows hold the turn, with their lever.
+                    r.roll = ContactState::default();
+                }
+                let rolling = laws
+                    .rolling
+                    .as_ref()
+                    .filter(|_| freedom != Freedom::Blocked);
+                let (max, target) = rolling.map_or((0.0, 0.0), |law| {
                     let measured = mu_of(impulse(JointAxis::AngX), r.arm_roll);
                     step_axis(&mut r.roll, law, arm_roll, w, measured, law_step)
                 });
@@ -483,7 +578,7 @@ impl Rolling {
             r.point = p;
             r.normal_force = f_n;
             r.resists = [
-                laws.rolling.is_some(),
+                laws.rolling.is_some() && freedom != Freedom::Blocked,
                 cfg!(not(dim2)) && laws.spinning.is_some(),
             ];
             self.pairs.insert((c1, c2), r);
