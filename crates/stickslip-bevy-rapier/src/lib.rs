@@ -39,6 +39,12 @@
 //! pairs bevy_rapier would call them for without stickslip (the hook flag stickslip turns on
 //! in rapier is its own; the app's `ActiveHooks` component stays the app's).
 //! stickslip acts on the default rapier context; other contexts step as in bevy_rapier.
+//!
+//! Rolling and spinning resistance (`FrictionMaterial::with_rolling`, `with_spinning`) work
+//! as in rapier: before each bracketed step stickslip sets the motors of one impulse joint per
+//! resisting pair, which it keeps in the context's joint set without an entity (and, for
+//! colliders without a rigid body, one fixed body of its own in the body set);
+//! `StickSlipRapier::modifier().rolling_reports(&joints.impulse_joints)` reads them back.
 
 #![warn(missing_docs)]
 

@@ -166,6 +166,16 @@ pub(crate) fn step_simulation_bracketed<H>(
                     state
                         .modifier
                         .begin_step(&params, &bodies.bodies, &mut colliders.colliders);
+                    // Rolling and spinning resistance: stickslip's own joints (and, for
+                    // colliders without a body, its one fixed body) in the context's sets,
+                    // without entities (bevy_rapier syncs only the entities it knows).
+                    state.modifier.resist_rotation(
+                        &params,
+                        &mut joints.impulse_joints,
+                        &sim.narrow_phase,
+                        &mut bodies.bodies,
+                        &colliders.colliders,
+                    );
                 }
                 let hooks = StepHooks {
                     stickslip: bracket.then_some(&state.modifier),

@@ -1,0 +1,1 @@
+../../stickslip-bevy-rapier/tests/rolling_resistance.rs
