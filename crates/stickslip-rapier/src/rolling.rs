@@ -408,23 +408,25 @@ impl Rolling {
                 stiffness_time,
                 inv_inertia: (inv_inertia(bodies, Some(b1)) + inv_inertia(bodies, Some(b2))) as f64,
             };
-            let entry = self.pairs.get_mut(&(c1, c2));
-            let fresh = entry.is_none();
-            let mut r = match entry {
-                Some(r) => r.clone(),
-                None => Resisting {
-                    joint: ImpulseJointHandle::invalid(),
-                    roll: ContactState::default(),
-                    spin: ContactState::default(),
-                    axis_x: Vector::ZERO,
-                    normal: Vector::ZERO,
-                    arm_roll,
-                    arm_spin,
-                    seen: step,
-                    point: p,
-                    normal_force: 0.0,
-                    resists: [false; 2],
-                },
+            // Stepped in place (one lookup, no copy).
+            let (fresh, r) = match self.pairs.entry((c1, c2)) {
+                std::collections::hash_map::Entry::Occupied(e) => (false, e.into_mut()),
+                std::collections::hash_map::Entry::Vacant(e) => (
+                    true,
+                    e.insert(Resisting {
+                        joint: ImpulseJointHandle::invalid(),
+                        roll: ContactState::default(),
+                        spin: ContactState::default(),
+                        axis_x: Vector::ZERO,
+                        normal: Vector::ZERO,
+                        arm_roll,
+                        arm_spin,
+                        seen: step,
+                        point: p,
+                        normal_force: 0.0,
+                        resists: [false; 2],
+                    }),
+                ),
             };
             // The motors' impulses over the last step (torque on body 2: −λ along each axis).
             // rapier keeps a motor's impulse of the last substep; the substeps are of equal
@@ -581,7 +583,6 @@ impl Rolling {
                 laws.rolling.is_some() && freedom != Freedom::Blocked,
                 cfg!(not(dim2)) && laws.spinning.is_some(),
             ];
-            self.pairs.insert((c1, c2), r);
         }
         // Pairs that stopped touching (or resisting) lose their joint, in the pairs' order:
         // the order of removals decides the handles of joints inserted later, and so the
