@@ -80,10 +80,9 @@ fn scene(r: f32, tan_theta: f64, mu_r: f64, hz: f64) -> Scene {
 }
 
 /// A solid cylinder of radius `r` and length 2 r lying on its side (its axis along z: it
-/// rolls along x), on a half-space floor (rapier's cylinder-on-cuboid manifold re-picks its
-/// points as the cylinder turns, one end twice, and plain rapier's roll there misses the
-/// closed form by a third: 0.042 against 0.065 m/s² at tan θ 0.01, R 0.05 m, in a probe I did
-/// not keep; on a half-space the line contact keeps its two end points).
+/// rolls along x), on a half-space floor, where the line contact keeps its two end points
+/// (on a cuboid, rapier's manifold re-picked them as the cylinder turned, and plain rapier's
+/// own roll missed the closed form by a third, in a probe not kept here).
 #[cfg(not(dim2))]
 fn cylinder_scene(r: f32, tan_theta: f64, mu_r: f64, hz: f64) -> Scene {
     let cylinder = ColliderBuilder::cylinder(r, r).rotation(Vector::new(

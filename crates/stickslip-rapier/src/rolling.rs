@@ -48,7 +48,8 @@
 //!
 //! **Read-back.** [`crate::StickSlip::rolling_reports`] gives each resisting pair's regimes,
 //! torque caps and the torques the solver applied, from the motors' impulses after the step
-//! (no extra work in the step). **Snapshots** keep the pairs' states and joint handles: a
+//! (no extra work in the step), along the axes the step started with (the motors act in
+//! collider 1's body frame: when that body turns, its axes turn by |ω₁| dt within the step). **Snapshots** keep the pairs' states and joint handles: a
 //! restored world takes its joints over (see `adopt`).
 
 use crate::measure::{measure, world_centroid};
@@ -98,6 +99,9 @@ pub(crate) struct Resisting {
     pub normal_force: f64,
     /// Whether the pair's materials resisted rolling and spinning in the last step.
     pub resists: [bool; 2],
+    /// The solver's substeps in the last step (a motor's impulse over the step is its last
+    /// substep's times the substeps).
+    pub substeps: usize,
 }
 
 /// A resisting pair with its colliders.
@@ -113,10 +117,8 @@ pub(crate) struct Rolling {
     /// The fixed body the joints of colliders without a body hang from (rapier joins
     /// bodies only).
     anchor: Option<RigidBodyHandle>,
-    /// The last step's length (s) and solver substeps: a motor's impulse over the step is
-    /// its last substep's times the substeps.
+    /// The last step's length (s).
     pub dt: f64,
-    pub substeps: usize,
 }
 
 /// The kernel's basis for a resistance about one axis (spinning, or rolling in 2D): the
@@ -323,11 +325,10 @@ impl Rolling {
         mut laws_of: impl FnMut(ColliderHandle, ColliderHandle) -> Option<RotationLaws<'a>>,
     ) {
         if !self.adopted {
-            self.adopt(joints);
+            self.adopt(joints, bodies, colliders);
         }
-        self.step += 1;
+        self.step = self.step.wrapping_add(1);
         self.dt = dt;
-        self.substeps = substeps;
         let step = self.step;
         for pair in narrow_phase.contact_pairs() {
             if !pair.has_any_active_contact() {
@@ -425,6 +426,7 @@ impl Rolling {
                         point: p,
                         normal_force: 0.0,
                         resists: [false; 2],
+                        substeps: 1,
                     }),
                 ),
             };
@@ -433,7 +435,8 @@ impl Rolling {
             // length.
             let last = joints.get(r.joint).filter(|_| !fresh);
             let impulse = |axis: JointAxis| {
-                last.map_or(0.0, |j| j.data.motors[axis as usize].impulse) as f64 * substeps as f64
+                last.map_or(0.0, |j| j.data.motors[axis as usize].impulse) as f64
+                    * r.substeps as f64
             };
             let normal_impulse = f_n * dt;
             let mu_of = |lambda: f64, arm: f32| {
@@ -579,6 +582,14 @@ impl Rolling {
             r.seen = step;
             r.point = p;
             r.normal_force = f_n;
+            // rapier runs an island's extra iterations as extra substeps (the pair's bodies'
+            // ask; a body elsewhere in the island asking more is not seen).
+            let extra = |h: RigidBodyHandle| {
+                bodies
+                    .get(h)
+                    .map_or(0, |b| b.additional_solver_iterations())
+            };
+            r.substeps = substeps + extra(b1).max(extra(b2));
             r.resists = [
                 laws.rolling.is_some() && freedom != Freedom::Blocked,
                 cfg!(not(dim2)) && laws.spinning.is_some(),
@@ -604,14 +615,30 @@ impl Rolling {
     /// Takes over the joints of a restored world: those of the pairs this modifier was
     /// restored with keep their states; every other joint of stickslip's is removed (a
     /// snapshot without rolling states starts afresh).
-    fn adopt(&mut self, joints: &mut ImpulseJointSet) {
-        for r in self.pairs.values_mut() {
-            if joints
-                .get(r.joint)
-                .is_none_or(|j| j.data.user_data != JOINT_TAG)
-            {
-                // Not stickslip's joint (a world other than the snapshot's): a new one is
-                // inserted at the next step, with the pair's states.
+    fn adopt(
+        &mut self,
+        joints: &mut ImpulseJointSet,
+        bodies: &RigidBodySet,
+        colliders: &ColliderSet,
+    ) {
+        // A joint joins the pair's bodies, or for a collider without one a fixed body of
+        // stickslip's.
+        let joins =
+            |c: ColliderHandle, b: RigidBodyHandle| match colliders.get(c).map(|c| c.parent()) {
+                Some(Some(parent)) => parent == b,
+                Some(None) => bodies
+                    .get(b)
+                    .is_some_and(|b| b.user_data == JOINT_TAG && b.is_fixed()),
+                None => false,
+            };
+        let mut taken = std::collections::HashSet::new();
+        for (&(c1, c2), r) in self.pairs.iter_mut() {
+            let ours = joints.get(r.joint).is_some_and(|j| {
+                j.data.user_data == JOINT_TAG && joins(c1, j.body1()) && joins(c2, j.body2())
+            });
+            if !ours || !taken.insert(r.joint) {
+                // Not this pair's joint (a world other than the snapshot's), or one another
+                // pair took: a new one is inserted at the next step, with the pair's states.
                 r.joint = ImpulseJointHandle::invalid();
             }
         }
@@ -635,12 +662,11 @@ impl Rolling {
         (self.step, images)
     }
 
-    /// The state [`Self::images`] gave, with the last step's length and substeps: the joints
-    /// of the world it is restored with are taken over at the next step (see `adopt`).
+    /// The state [`Self::images`] gave, with the last step's length: the joints of the
+    /// world it is restored with are taken over at the next step (see `adopt`).
     pub fn from_images(
         step: u64,
         dt: f64,
-        substeps: usize,
         images: impl IntoIterator<Item = ResistingPair>,
     ) -> Self {
         Rolling {
@@ -649,7 +675,6 @@ impl Rolling {
             adopted: false,
             anchor: None,
             dt,
-            substeps,
         }
     }
 
@@ -667,7 +692,7 @@ impl Rolling {
                         .get(r.joint)
                         .map_or(0.0, |j| j.data.motors[axis as usize].impulse)
                         as f64
-                        * self.substeps as f64
+                        * r.substeps as f64
                 };
                 let torque = |axis: JointAxis, along: Vector| {
                     let t = if self.dt > 0.0 {

@@ -718,11 +718,9 @@ pub struct StickSlipSnapshot {
 #[derive(Debug, Clone, Default, Serialize, Deserialize)]
 struct RollingSnapshot {
     step: u64,
-    /// The last step's length (s) and solver substeps (the torques of the reports).
+    /// The last step's length (s) (the torques of the reports).
     #[serde(default)]
     dt: f64,
-    #[serde(default)]
-    substeps: u32,
     pairs: Vec<ResistingSnapshot>,
 }
 
@@ -740,10 +738,16 @@ struct ResistingSnapshot {
     arm_spin: f32,
     seen: u64,
     /// The contact point (m) and normal force (N) of the last step.
+    #[serde(default)]
     point: [f32; 3],
+    #[serde(default)]
     normal_force: f64,
     /// Whether the materials resisted rolling and spinning in the last step.
+    #[serde(default)]
     resists: [bool; 2],
+    /// The solver's substeps in the last step.
+    #[serde(default)]
+    substeps: u32,
 }
 
 impl From<&ResistingPair> for ResistingSnapshot {
@@ -762,6 +766,7 @@ impl From<&ResistingPair> for ResistingSnapshot {
             point: crate::tangent::world(r.point),
             normal_force: r.normal_force,
             resists: r.resists,
+            substeps: u32::try_from(r.substeps).unwrap_or(u32::MAX),
         }
     }
 }
@@ -795,6 +800,7 @@ impl ResistingSnapshot {
                 point: crate::tangent::vector(self.point),
                 normal_force: self.normal_force,
                 resists: self.resists,
+                substeps: (self.substeps as usize).max(1),
             },
         ))
     }
@@ -988,7 +994,6 @@ impl<H> StickSlip<H> {
                 RollingSnapshot {
                     step,
                     dt: self.rolling.dt,
-                    substeps: u32::try_from(self.rolling.substeps).unwrap_or(u32::MAX),
                     pairs: images.iter().map(ResistingSnapshot::from).collect(),
                 }
             },
@@ -1157,6 +1162,12 @@ impl<H> StickSlip<H> {
                 ));
             }
             let (pair, r) = p.to_pair()?;
+            if r.seen > s.rolling.step {
+                return Err(invalid(
+                    "rolling resistance",
+                    "a pair seen after the resistance's last step",
+                ));
+            }
             // Only pairs of colliders in the set: others can never be stepped.
             if colliders.contains(pair.0) && colliders.contains(pair.1) {
                 resisting.push((pair, r));
@@ -1165,12 +1176,7 @@ impl<H> StickSlip<H> {
         if !(s.rolling.dt.is_finite() && s.rolling.dt >= 0.0) {
             return Err(invalid("rolling resistance", "dt not finite, or negative"));
         }
-        m.rolling = crate::rolling::Rolling::from_images(
-            s.rolling.step,
-            s.rolling.dt,
-            s.rolling.substeps as usize,
-            resisting,
-        );
+        m.rolling = crate::rolling::Rolling::from_images(s.rolling.step, s.rolling.dt, resisting);
         // Combined laws are computed again.
         Ok(m)
     }

@@ -636,11 +636,16 @@ impl RerunLogger {
             let s = r.spinning_torque;
             [t[0] + s[0], t[1] + s[1], t[2] + s[2]]
         };
-        // 0.3 m for the largest torque first seen (until one is, the arrows have no length).
+        // 0.3 m for the largest torque cap first seen (μ · arm · F_n: known from a contact's
+        // first step, where the torque itself may be near zero; until one is, no length).
         if self.torque_scale.is_none_or(|s| s == 0.0) {
             let max = reports
                 .iter()
-                .map(|r| norm3(torque(r).map(f64::from)))
+                .map(|r| {
+                    let rolling = r.rolling_limit * r.rolling_arm as f64;
+                    let spinning = r.spinning_limit * r.spinning_arm as f64;
+                    rolling.max(spinning) * r.normal_force
+                })
                 .fold(0.0, f64::max);
             self.torque_scale = Some(if max > 0.0 { (0.3 / max) as f32 } else { 0.0 });
         }

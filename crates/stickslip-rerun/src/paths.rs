@@ -8,7 +8,7 @@
 //! | `world/contacts` | `AnnotationContext` (regime legend) | static |
 //! | `world/contacts/points` | `Points3D`, colored and classed by regime (sticking / stick-slip / sliding) | every logged step (empty when there are no contacts) |
 //! | `world/contacts/friction` | `Arrows3D`: friction force on the second body, from the contact point, scaled by the logger's `force_scale` (m/N) | every logged step |
-//! | `world/contacts/rolling` | `Arrows3D`: rolling- plus spinning-resistance torque on the second body of each resisting pair, from the contact point, 0.3 m for the largest torque first seen; colored and classed by the rolling regime (else the spinning one) | logged steps from the first with a resisting pair |
+//! | `world/contacts/rolling` | `Arrows3D`: rolling- plus spinning-resistance torque on the second body of each resisting pair, from the contact point, 0.3 m for the largest torque cap (μ · arm · F_n) first seen; colored and classed by the rolling regime (else the spinning one) | logged steps from the first with a resisting pair |
 //! | `series/world/{sticking,stick_slip,sliding}` | `Scalars`: number of contacts per regime | every logged step |
 //! | `series/world/{normal_force,friction_force,dissipated_power,dissipated_energy}` | `Scalars` (N, N, W, J) | every logged step |
 //! | `series/bodies/{body}/{speed,displacement,normal_force,friction_force,effective_mu,dissipated_power}` | `Scalars` per non-fixed body, summed over the body's contacts | every logged step (first `max_body_series` bodies) |

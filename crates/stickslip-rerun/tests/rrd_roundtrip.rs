@@ -6,8 +6,9 @@
 //! equal to the reported regimes, regime-count series equal to the world totals, the
 //! dissipated-energy series ending at the runner's total, body displacement series equal to the
 //! bodies' displacement, the vibration series equal to the source's waveform at each logged
-//! time, and per-contact series capped at the configured number; rolling-resistance torque
-//! arrows and series equal to the modifier's rolling reports. Holds for the `.rrd` file sink
+//! time, and per-contact series capped at the configured number; one rolling-resistance
+//! torque arrow per resisting pair and logged step, classed by its rolling regime, and
+//! torque series equal to the modifier's rolling reports. Holds for the `.rrd` file sink
 //! and the in-memory sink.
 
 use rapier3d::prelude::*;
