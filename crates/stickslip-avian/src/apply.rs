@@ -11,6 +11,7 @@ use crate::dim::{self, Angular, basis, lift, local_normal, point_velocity, vecto
 use crate::key::{ContactKey, Part};
 use crate::pair_law::{PairLaws, Side, side};
 use crate::plugin::StickSlipAvianConfig;
+use crate::rolling::{Rolling, RollingBody, RollingContact};
 use crate::store::ContactStore;
 use avian::collision::narrow_phase::NarrowPhaseConfig;
 use avian::dynamics::rigid_body::sleeping::SleepTimer;
@@ -43,6 +44,7 @@ type BodyItem = (
     Option<&'static AngularVelocity>,
     Option<&'static ComputedMass>,
     Option<&'static Friction>,
+    Option<&'static ComputedAngularInertia>,
 );
 
 /// What `apply` reads besides the contact graph.
@@ -54,6 +56,7 @@ pub(crate) struct World<'w, 's> {
     narrow_phase: Res<'w, NarrowPhaseConfig>,
     config: Res<'w, StickSlipAvianConfig>,
     time: Res<'w, Time>,
+    substeps: Res<'w, SubstepCount>,
 }
 
 /// A body's motion at a contact.
@@ -62,28 +65,37 @@ struct Motion {
     linear: Vector,
     angular: Angular,
     inv_mass: f32,
+    /// The largest inverse principal inertia, bounded from above (0 unless dynamic).
+    inv_inertia: f32,
+    /// Dynamic or kinematic.
+    moves: bool,
 }
 
 impl World<'_, '_> {
     fn motion(&self, body: Option<Entity>) -> Motion {
-        let Some((rb, v, w, m, _)) = body.and_then(|b| self.bodies.get(b).ok()) else {
+        let Some((rb, v, w, m, _, i)) = body.and_then(|b| self.bodies.get(b).ok()) else {
             return Motion::default();
         };
+        let dynamic = rb.is_dynamic();
         Motion {
             linear: v.map_or(Vector::ZERO, |v| v.0),
             angular: w.map_or(Angular::default(), |w| w.0),
-            inv_mass: if rb.is_dynamic() {
+            inv_mass: if dynamic {
                 m.map_or(0.0, |m| m.inverse())
             } else {
                 0.0
             },
+            inv_inertia: i
+                .filter(|_| dynamic)
+                .map_or(0.0, dim::largest_inverse_inertia),
+            moves: !rb.is_static(),
         }
     }
 
     fn body_friction(&self, collider_of: Option<&ColliderOf>) -> Option<&Friction> {
         collider_of
             .and_then(|c| self.bodies.get(c.body).ok())
-            .and_then(|(.., f)| f)
+            .and_then(|(.., f, _)| f)
     }
 }
 
@@ -92,6 +104,7 @@ pub(crate) fn apply(
     mut graph: ResMut<ContactGraph>,
     mut store: ResMut<ContactStore>,
     mut laws: ResMut<PairLaws>,
+    mut rolling: ResMut<Rolling>,
     mut timers: Query<&mut SleepTimer>,
     world: World,
 ) {
@@ -99,8 +112,10 @@ pub(crate) fn apply(
     store.tick += 1;
     store.stepped.clear();
     let dt = world.time.delta_secs_f64();
+    rolling.begin(dt);
     // Also rejects NaN.
     if dt.is_nan() || dt <= 0.0 {
+        rolling.end();
         return;
     }
     let time = world.time.elapsed_secs_f64() - dt;
@@ -266,7 +281,56 @@ pub(crate) fn apply(
             dim::set_surface(manifold, target);
             store.stepped.insert((pair.contact_id.0, index), key);
         }
+        if let Some(rotation) = laws.rotation(sides.0, sides.1) {
+            // The manifold carrying the most points, with its last tick's normal force.
+            let Some((index, m)) = pair
+                .manifolds
+                .iter()
+                .enumerate()
+                .max_by_key(|(_, m)| m.points.len())
+            else {
+                continue;
+            };
+            // The tick's mean (the sum over its substeps): a rolling contact's last substep
+            // carries less than its share.
+            let normal_force = store
+                .stepped
+                .get(&(pair.contact_id.0, index))
+                .and_then(|k| store.records.get(k))
+                .map_or(0.0, |r| r.tick_forces.normal_force);
+            let points = m.points.len().max(1) as f32;
+            let anchors = m
+                .points
+                .iter()
+                .fold((Vector::ZERO, Vector::ZERO), |(a, b), p| {
+                    (a + p.anchor1, b + p.anchor2)
+                });
+            let body = |entity, motion: Motion, anchor| RollingBody {
+                entity,
+                moves: motion.moves,
+                angular: motion.angular,
+                inv_inertia: motion.inv_inertia,
+                anchor,
+            };
+            rolling.step_pair(
+                (pair.collider1, pair.collider2),
+                rotation,
+                RollingContact {
+                    points: &m.points,
+                    normal: m.normal,
+                    normal_force,
+                },
+                (
+                    body(pair.body1, m1, anchors.0 / points),
+                    body(pair.body2, m2, anchors.1 / points),
+                ),
+                world.substeps.0,
+                time,
+                world.config.stiffness_time,
+            );
+        }
     }
+    rolling.end();
 }
 
 /// Scales the manifold's warm-start friction impulses into the friction cone of the limit

@@ -152,3 +152,20 @@ pub(crate) fn friction_impulse(
         }
     })
 }
+
+/// An upper bound of a body's largest inverse principal inertia (1/(kg m²)): in 3D the
+/// largest absolute row sum of its inverse tensor (no eigenvalue exceeds it).
+pub(crate) fn largest_inverse_inertia(i: &ComputedAngularInertia) -> f32 {
+    #[cfg(not(dim2))]
+    {
+        let m = i.inverse();
+        let row = |a: f32, b: f32, c: f32| a.abs() + b.abs() + c.abs();
+        row(m.m00, m.m01, m.m02)
+            .max(row(m.m01, m.m11, m.m12))
+            .max(row(m.m02, m.m12, m.m22))
+    }
+    #[cfg(dim2)]
+    {
+        i.inverse()
+    }
+}

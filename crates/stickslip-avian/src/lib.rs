@@ -16,7 +16,11 @@
 //! - [`StickSlipContacts`] reads the contacts back by entity ([`ContactReport`], the type
 //!   every stickslip engine reads back, its slip velocity the one the law stepped with, at
 //!   the start of the tick), and [`RegimeChanged`] tells when a contact sticks, slips or
-//!   slides.
+//!   slides;
+//! - a material with rolling or spinning resistance (`FrictionMaterial::with_rolling`,
+//!   `with_spinning`) gets a torque against the bodies' relative rolling and spinning,
+//!   governed by its own law (a ball that holds on a gentle slope, rolls to a stop, stops
+//!   spinning), read back in [`StickSlipRolling`] ([`RollingReport`]).
 //!
 //! The components, the read-back and the gizmos are stickslip-bevy's, shared with
 //! stickslip-bevy-rapier: an app moving between bevy_rapier and avian changes its plugin.
@@ -55,6 +59,11 @@
 //!   the impulses** after each substep's relax pass (`SubstepSchedule`);
 //! - **measure**, right after the solver stored its impulses: each manifold's normal force and
 //!   friction over the tick.
+//! - **rolling resistance**: `apply` also steps each resisting pair's rolling and spinning
+//!   laws and gives the substeps their angular rows, warm-started and solved after avian's
+//!   contact rows in both of its passes (see the `rolling` module's docs: why the torque comes
+//!   out of one solve with the contact's friction and normal force, and how a hold stays
+//!   still).
 //!
 //! **Per tick, not per substep.** avian solves each tick in `SubstepCount` substeps (6 by
 //! default) with the friction and tangent velocity its narrow phase left on the manifold, as
@@ -105,6 +114,7 @@ mod measure;
 mod pair_law;
 mod plugin;
 pub mod prelude;
+mod rolling;
 mod store;
 
 pub use plugin::{StickSlipAvianPlugin, StickSlipAvianSystems};
@@ -115,8 +125,8 @@ pub use stickslip_bevy::debug;
 #[cfg(feature = "window")]
 pub use stickslip_bevy::window;
 pub use stickslip_bevy::{
-    ContactReport, RegimeChanged, StickSlipContacts, StickSlipFriction, StickSlipVibration,
-    SurfaceVelocity,
+    ContactReport, RegimeChanged, RollingReport, StickSlipContacts, StickSlipFriction,
+    StickSlipRolling, StickSlipVibration, SurfaceVelocity,
 };
 /// The engine-free core (laws, sliding curves, vibration sources), so an app needs no second
 /// stickslip dependency.

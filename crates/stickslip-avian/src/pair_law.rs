@@ -11,6 +11,7 @@
 //!   plain Coulomb friction at the combined break-away coefficient, with a warning, as in
 //!   stickslip-rapier.
 
+use crate::rolling::RotationLaws;
 use avian::prelude::{CoefficientCombine, Friction};
 use bevy::platform::collections::HashMap;
 use bevy::prelude::*;
@@ -91,22 +92,58 @@ fn rule(r: CoefficientCombine) -> CombineRule {
 #[derive(Resource, Default)]
 pub(crate) struct PairLaws {
     combined: HashMap<(SideKey, SideKey), Option<Law>>,
+    /// The rolling and spinning laws of pairs with a side that resists rotation.
+    rotation: HashMap<(SideKey, SideKey), RotationLaws>,
 }
 
 impl PairLaws {
     /// Forgets every combination (a material changed or went).
     pub(crate) fn clear(&mut self) {
         self.combined.clear();
+        self.rotation.clear();
+    }
+
+    /// The rolling and spinning laws of the pair `(a, b)`, or `None` when neither side's
+    /// material resists rotation: a material's own, or both sides' combined by the pair's
+    /// rule like the friction law (a plain side brings none).
+    pub(crate) fn rotation<'a>(&mut self, a: Side<'a>, b: Side<'a>) -> Option<&RotationLaws> {
+        let resists = |s: &Side| matches!(s, Side::Material(_, m, _) if m.resists_rotation());
+        if !resists(&a) && !resists(&b) {
+            return None;
+        }
+        let key = canonical(a.key(), b.key());
+        if !self.rotation.contains_key(&key) && self.rotation.len() >= MAX_COMBINATIONS {
+            self.rotation.clear();
+        }
+        Some(self.rotation.entry(key).or_insert_with(|| {
+            let pair_rule = rule(a.rule().max(b.rule()));
+            let material = |s: Side<'a>| match s {
+                Side::Material(_, m, _) => Some(m),
+                Side::Plain(_) => None,
+            };
+            let (m1, m2) = (material(a), material(b));
+            let pick = |x: Option<&Law>, y: Option<&Law>| match (x, y) {
+                (Some(x), Some(y)) if x == y => Some(x.clone()),
+                (Some(x), Some(y)) => Some(x.combine_or_coulomb(y, pair_rule).0),
+                (Some(x), None) | (None, Some(x)) => Some(x.clone()),
+                (None, None) => None,
+            };
+            RotationLaws {
+                rolling: pick(
+                    m1.and_then(|m| m.rolling.as_ref()),
+                    m2.and_then(|m| m.rolling.as_ref()),
+                ),
+                spinning: pick(
+                    m1.and_then(|m| m.spinning.as_ref()),
+                    m2.and_then(|m| m.spinning.as_ref()),
+                ),
+            }
+        }))
     }
 
     /// The law of the pair `(a, b)`, or `None` when it is avian's own Coulomb friction.
     pub(crate) fn law(&mut self, a: Side, b: Side) -> Option<&Law> {
-        let (ka, kb) = (a.key(), b.key());
-        let key = if (ka_order(ka)) <= ka_order(kb) {
-            (ka, kb)
-        } else {
-            (kb, ka)
-        };
+        let key = canonical(a.key(), b.key());
         if !self.combined.contains_key(&key) && self.combined.len() >= MAX_COMBINATIONS {
             self.combined.clear();
         }
@@ -114,6 +151,15 @@ impl PairLaws {
             .entry(key)
             .or_insert_with(|| combine(a, b))
             .as_ref()
+    }
+}
+
+/// The cache key of a pair: its side keys in canonical order.
+fn canonical(ka: SideKey, kb: SideKey) -> (SideKey, SideKey) {
+    if ka_order(ka) <= ka_order(kb) {
+        (ka, kb)
+    } else {
+        (kb, ka)
     }
 }
 

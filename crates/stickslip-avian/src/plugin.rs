@@ -3,14 +3,18 @@
 use crate::apply::apply;
 use crate::measure::{accumulate, carry_warm_start, measure};
 use crate::pair_law::PairLaws;
+use crate::rolling::{Rolling, collect, relax_rows, solve_rows, warm_start};
 use crate::store::ContactStore;
 use avian::collision::narrow_phase::NarrowPhaseSystems;
+use avian::dynamics::integrator::IntegrationSystems;
 use avian::dynamics::solver::islands::WakeBody;
 use avian::dynamics::solver::schedule::{SolverSystems, SubstepSchedule, SubstepSolverSystems};
+use avian::dynamics::solver::xpbd::XpbdSolverSystems;
 use avian::prelude::*;
 use bevy::prelude::*;
 use stickslip_bevy::{
-    RegimeChanged, StickSlipContacts, StickSlipFriction, StickSlipVibration, SurfaceVelocity,
+    RegimeChanged, StickSlipContacts, StickSlipFriction, StickSlipRolling, StickSlipVibration,
+    SurfaceVelocity,
 };
 use stickslip_core::FrictionMaterial;
 use stickslip_core::law::{Coulomb, Law};
@@ -69,6 +73,8 @@ impl Plugin for StickSlipAvianPlugin {
         .init_resource::<ContactStore>()
         .init_resource::<PairLaws>()
         .init_resource::<StickSlipContacts>()
+        .init_resource::<Rolling>()
+        .init_resource::<StickSlipRolling>()
         .add_message::<RegimeChanged>()
         .configure_sets(
             PhysicsSchedule,
@@ -86,13 +92,25 @@ impl Plugin for StickSlipAvianPlugin {
                     .chain()
                     .in_set(StickSlipAvianSystems::Apply),
                 carry_warm_start.in_set(SolverSystems::PreSubstep),
-                measure.in_set(StickSlipAvianSystems::Measure),
+                (measure, collect).in_set(StickSlipAvianSystems::Measure),
                 wake_driven.in_set(PhysicsStepSystems::First),
             ),
         )
         .add_systems(
             SubstepSchedule,
-            accumulate.after(SubstepSolverSystems::Relax),
+            (
+                accumulate.after(SubstepSolverSystems::Relax),
+                // Rolling resistance's rows, each pass after avian's contact rows.
+                warm_start
+                    .after(SubstepSolverSystems::WarmStart)
+                    .before(SubstepSolverSystems::SolveConstraints),
+                solve_rows
+                    .after(SubstepSolverSystems::SolveConstraints)
+                    .before(IntegrationSystems::Position),
+                relax_rows
+                    .after(SubstepSolverSystems::Relax)
+                    .before(XpbdSolverSystems::SolveConstraints),
+            ),
         );
     }
 }

@@ -1,7 +1,7 @@
 //! What an avian app names: `use stickslip_avian::prelude::*;`.
 pub use crate::{
-    ContactReport, RegimeChanged, StickSlipAvianPlugin, StickSlipContacts, StickSlipFriction,
-    StickSlipVibration, SurfaceVelocity,
+    ContactReport, RegimeChanged, RollingReport, StickSlipAvianPlugin, StickSlipContacts,
+    StickSlipFriction, StickSlipRolling, StickSlipVibration, SurfaceVelocity,
 };
 // The core's prelude without `Curve`, which bevy's prelude names too (bevy_math's `Curve`):
 // name it as `core::sliding_curve::Curve`.

@@ -25,4 +25,6 @@ mod read_back;
 pub mod window;
 
 pub use components::{StickSlipFriction, StickSlipVibration, SurfaceVelocity};
-pub use read_back::{ContactReport, RegimeChanged, StickSlipContacts};
+pub use read_back::{
+    ContactReport, RegimeChanged, RollingReport, StickSlipContacts, StickSlipRolling,
+};

@@ -44,3 +44,22 @@ pub struct RegimeChanged {
     /// The regime now.
     pub to: Regime,
 }
+
+/// A pair resisting rolling or spinning (see [`stickslip_core::FrictionMaterial::with_rolling`])
+/// after the last physics step, its colliders as entities (see
+/// [`stickslip_core::report::RollingReport`] for its fields).
+pub type RollingReport = stickslip_core::report::RollingReport<Entity, 3>;
+
+/// The pairs resisting rolling or spinning after the last physics step: their regimes,
+/// torque caps and the torques the solver applied.
+#[derive(Resource, Debug, Default)]
+pub struct StickSlipRolling(pub Vec<RollingReport>);
+
+impl StickSlipRolling {
+    /// The resisting pairs of the collider `entity`.
+    pub fn of(&self, entity: Entity) -> impl Iterator<Item = &RollingReport> {
+        self.0
+            .iter()
+            .filter(move |c| c.collider1 == entity || c.collider2 == entity)
+    }
+}

@@ -13,6 +13,8 @@
 //! - [`contact`]: the per-contact kernel every engine adapter calls, and the vibration sources.
 //! - [`report`]: the contact read-back every engine adapter gives, one type for all (and
 //!   one for the pairs that resist rolling or spinning).
+//! - [`rolling`]: the engine-free part of rolling and spinning resistance (which turns a
+//!   contact rolls, the resisting torques' caps and targets per step).
 //! - [`profile`]: validated piecewise-linear force profiles F(t), such as the seed's Example 1.
 //!
 //! The reference simulators and the rest of Popov's theory (static friction, spring model,
@@ -30,6 +32,7 @@ pub mod popov;
 pub mod prelude;
 pub mod profile;
 pub mod report;
+pub mod rolling;
 mod rolling_report;
 pub mod sliding_curve;
 pub mod switch;

@@ -59,8 +59,11 @@ use rapier::math::Mat3;
 use rapier::prelude::*;
 use std::borrow::Cow;
 use std::collections::HashMap;
-use stickslip_core::contact::{ContactInput, ContactState, TangentBasis, step_contact};
+use stickslip_core::contact::ContactState;
 use stickslip_core::law::{FrictionLaw, Law};
+use stickslip_core::rolling::{AxisStep, Freedom, freedom, reduced_arm, step_axis};
+#[cfg(not(dim2))]
+use stickslip_core::rolling::{RollingInput, step_rolling};
 
 /// Marks stickslip's joints (`GenericJoint::user_data`), so that a world restored from a
 /// snapshot does not keep them twice.
@@ -121,50 +124,6 @@ pub(crate) struct Rolling {
     pub dt: f64,
 }
 
-/// The kernel's basis for a resistance about one axis (spinning, or rolling in 2D): the
-/// "slip" is its first component.
-fn axis_basis() -> TangentBasis {
-    TangentBasis::plane([0.0, 0.0, 1.0], [1.0, 0.0, 0.0])
-}
-
-/// What a resisting motor needs of one step of its law.
-#[derive(Clone, Copy)]
-struct Step {
-    /// The pair's normal force (N) and the step (s), time at its start (s), the averaging
-    /// time of the mean normal force (s) and the bodies' summed largest inverse inertia.
-    normal_force: f64,
-    dt: f64,
-    time: f64,
-    stiffness_time: f64,
-    inv_inertia: f64,
-}
-
-/// Steps the law of a resistance about one axis (spinning, or rolling in 2D) with arm `arm`,
-/// relative angular velocity `rate` and the motor's measured "friction" `measured`: the
-/// motor's torque cap (N·m) and target rate (rad/s).
-fn step_axis(
-    state: &mut ContactState,
-    law: &Law,
-    arm: f32,
-    rate: f32,
-    measured: f64,
-    s: Step,
-) -> (f64, f64) {
-    let basis = axis_basis();
-    let out = step_contact(
-        state,
-        &ContactInput::new(law, &basis, s.dt)
-            .with_solve(s.normal_force, [measured, 0.0], [(rate * arm) as f64, 0.0])
-            .at_time(s.time)
-            .with_inv_mass(s.inv_inertia * (arm as f64).powi(2))
-            .with_stiffness_time(s.stiffness_time),
-    );
-    (
-        out.limit * arm as f64 * s.normal_force,
-        out.target[0] / arm as f64,
-    )
-}
-
 /// Sets a motor of `joint` to drive its axis' relative angular velocity to `target` with at
 /// most `max` (N·m); a non-finite value leaves it free.
 fn set_motor(joint: &mut GenericJoint, axis: JointAxis, max: f64, target: f64) {
@@ -175,24 +134,6 @@ fn set_motor(joint: &mut GenericJoint, axis: JointAxis, max: f64, target: f64) {
     };
     joint.set_motor_velocity(axis, target, RIGID);
     joint.set_motor_max_force(axis, max);
-}
-
-/// The basis of the kernel for the rolling axes (x, z = x × n) and normal n: components
-/// (x, −z) are the kernel's (t1, t2 = n × t1).
-#[cfg(not(dim2))]
-fn kernel_basis(x: Vector, n: Vector) -> TangentBasis {
-    TangentBasis::plane(n.to_array(), x.to_array())
-}
-
-/// A unit vector normal to `n`: `hint` made normal to it, else any.
-#[cfg(not(dim2))]
-fn tangent_axis(hint: Vector, n: Vector) -> Vector {
-    let t = hint - n * n.dot(hint);
-    if t.length_squared() > 1e-12 {
-        t.normalize()
-    } else {
-        n.any_orthonormal_vector()
-    }
 }
 
 /// The distance from a body's centre of mass to the contact plane through `p` with normal
@@ -215,19 +156,6 @@ fn inv_inertia(bodies: &RigidBodySet, h: Option<RigidBodyHandle>) -> f32 {
         }
         _ => 0.0,
     }
-}
-
-/// How a contact's points let its bodies roll against each other.
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Freedom {
-    /// A point (or points within the lever): about any axis of the contact plane.
-    Any,
-    /// A line of points (a cylinder on its side): only about the line; turning about the
-    /// axis across it lifts one end, which the contact's normal rows hold.
-    #[cfg_attr(dim2, allow(dead_code))]
-    About(Vector),
-    /// A patch (a box on its face): not at all; the normal rows hold every turn.
-    Blocked,
 }
 
 /// How the points of `m` (their centroid `p`, normal `n`) let the bodies roll, and their
@@ -257,31 +185,15 @@ fn rolling_freedom(
             .filter_map(|c| m.points.get(c.contact_indices()[0] as usize))
             .map(move |q| {
                 let d = (pos1 * q.local_p1 + pos2 * q.local_p2) * 0.5 - p;
-                d - n * n.dot(d)
+                crate::tangent::world(d - n * n.dot(d))
             })
     };
-    let farthest = offsets().fold(Vector::ZERO, |a, d| {
-        if d.length_squared() > a.length_squared() {
-            d
-        } else {
-            a
-        }
-    });
-    let spread = farthest.length();
-    if !(spread > lever) {
-        return Some((Freedom::Any, spread));
-    }
-    #[cfg(not(dim2))]
-    {
-        // Points along the farthest one's line, within the lever across it: a line.
-        let line = farthest / spread;
-        let across = n.cross(line);
-        let width = offsets().fold(0.0f32, |a, d| a.max(d.dot(across).abs()));
-        if !(width > lever) {
-            return Some((Freedom::About(line), spread));
-        }
-    }
-    Some((Freedom::Blocked, spread))
+    Some(freedom(
+        offsets,
+        crate::tangent::world(n),
+        lever,
+        cfg!(not(dim2)),
+    ))
 }
 
 impl Rolling {
@@ -328,6 +240,8 @@ impl Rolling {
             self.adopt(joints, bodies, colliders);
         }
         self.step = self.step.wrapping_add(1);
+        // The last step's length: the motors' impulses were over it.
+        let last_dt = if self.dt > 0.0 { self.dt } else { dt };
         self.dt = dt;
         let step = self.step;
         for pair in narrow_phase.contact_pairs() {
@@ -370,13 +284,7 @@ impl Rolling {
                 arm_of(bodies, Some(b1), p, n),
                 arm_of(bodies, Some(b2), p, n),
             );
-            let arm_roll = if r1.is_infinite() {
-                r2
-            } else if r2.is_infinite() {
-                r1
-            } else {
-                r1 * r2 / (r1 + r2)
-            };
+            let arm_roll = reduced_arm(r1, r2);
             if !(arm_roll.is_finite() && arm_roll > 0.0) {
                 continue;
             }
@@ -402,7 +310,7 @@ impl Rolling {
                 let _ = spread;
                 arm_roll
             };
-            let law_step = Step {
+            let law_step = AxisStep {
                 normal_force: f_n,
                 dt,
                 time,
@@ -438,7 +346,9 @@ impl Rolling {
                 last.map_or(0.0, |j| j.data.motors[axis as usize].impulse) as f64
                     * r.substeps as f64
             };
-            let normal_impulse = f_n * dt;
+            // Over the normal impulse the caps were set from: a cap the solve reached reads
+            // as the law's limit, whatever the load did since.
+            let normal_impulse = r.normal_force * last_dt;
             let mu_of = |lambda: f64, arm: f32| {
                 if normal_impulse > 0.0 {
                     lambda / (arm as f64 * normal_impulse)
@@ -453,54 +363,30 @@ impl Rolling {
                     bodies.get(b2).map_or(Vector::ZERO, |b| b.angvel()),
                 );
                 let w = w2 - w1;
-                let w_spin = n.dot(w);
-                let w_roll = match freedom {
-                    Freedom::Any => w - n * w_spin,
-                    // Only the turn about the line rolls.
-                    Freedom::About(d) => d * d.dot(w),
-                    Freedom::Blocked => Vector::ZERO,
-                };
-                // Rolling axes: along the rolling (a line contact's own), else the last ones
-                // carried onto this plane.
-                let roll_speed = w_roll.length() * arm_roll;
-                let old_basis = kernel_basis(r.axis_x, r.normal);
-                let axis_x = match freedom {
-                    Freedom::About(d) if d.dot(r.axis_x) < 0.0 => -d,
-                    Freedom::About(d) => d,
-                    // The rolling direction of the contact point is ω × n: its axis is ω's own
-                    // tangential direction.
-                    _ if roll_speed > 1e-6 => w_roll / w_roll.length(),
-                    _ => tangent_axis(r.axis_x, n),
-                };
-                let basis = kernel_basis(axis_x, n);
-                // The last solve's resisting "friction" as a world vector, re-expressed in this
+                // The last solve's resisting "friction" as a world vector, along the last
                 // step's axes.
-                let measured = {
-                    let old = old_basis.lift([
-                        mu_of(impulse(JointAxis::AngX), r.arm_roll),
-                        -mu_of(impulse(JointAxis::AngZ), r.arm_roll),
-                    ]);
-                    basis.project(old)
-                };
-                let mut torque_roll = (0.0, [0.0f64; 2]);
-                if freedom == Freedom::Blocked {
-                    // A patch does not roll: its normal rows hold the turn, with their lever.
-                    r.roll = ContactState::default();
-                } else if let Some(law) = &laws.rolling {
-                    let slip = basis.project((w_roll * arm_roll).to_array());
-                    let out = step_contact(
-                        &mut r.roll,
-                        &ContactInput::new(law, &basis, dt)
-                            .with_solve(f_n, measured, slip)
-                            .at_time(time)
-                            .with_inv_mass(law_step.inv_inertia * (arm_roll as f64).powi(2))
-                            .with_stiffness_time(stiffness_time),
-                    );
-                    torque_roll = (out.limit * arm_roll as f64 * f_n, out.target);
-                }
+                let measured = crate::tangent::world(
+                    r.axis_x * mu_of(impulse(JointAxis::AngX), r.arm_roll) as f32
+                        + r.axis_x.cross(r.normal)
+                            * mu_of(impulse(JointAxis::AngZ), r.arm_roll) as f32,
+                );
+                let command = step_rolling(
+                    &mut r.roll,
+                    laws.rolling.as_deref(),
+                    &RollingInput {
+                        freedom,
+                        relative_angular_velocity: crate::tangent::world(w),
+                        normal: crate::tangent::world(n),
+                        arm: arm_roll,
+                        last_axis: crate::tangent::world(r.axis_x),
+                        measured,
+                    },
+                    law_step,
+                );
+                let axis_x = Vector::from(command.axis_x);
                 let torque_spin = laws.spinning.as_ref().map_or((0.0, 0.0), |law| {
                     let measured = mu_of(impulse(JointAxis::AngY), r.arm_spin);
-                    step_axis(&mut r.spin, law, arm_spin, w_spin, measured, law_step)
+                    step_axis(&mut r.spin, law, arm_spin, n.dot(w), measured, law_step)
                 });
                 // The joint's frame: x, the normal as y, z = x × n; on each body, at the contact.
                 let z = axis_x.cross(n);
@@ -516,22 +402,8 @@ impl Rolling {
                 };
                 let (frame1, frame2) = (frame(b1), frame(b2));
                 let motors = [
-                    (
-                        JointAxis::AngX,
-                        torque_roll.0,
-                        torque_roll.1[0] / arm_roll as f64,
-                    ),
-                    (
-                        JointAxis::AngZ,
-                        // A line rolls about itself only: the turn across it is the normal
-                        // rows' (free here).
-                        if matches!(freedom, Freedom::Any) {
-                            torque_roll.0
-                        } else {
-                            0.0
-                        },
-                        -torque_roll.1[1] / arm_roll as f64,
-                    ),
+                    (JointAxis::AngX, command.caps[0], command.targets[0]),
+                    (JointAxis::AngZ, command.caps[1], command.targets[1]),
                     (JointAxis::AngY, torque_spin.0, torque_spin.1),
                 ];
                 let set = move |j: &mut GenericJoint| {

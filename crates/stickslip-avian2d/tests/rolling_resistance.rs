@@ -1,0 +1,1 @@
+../../stickslip-avian/tests/rolling_resistance.rs
