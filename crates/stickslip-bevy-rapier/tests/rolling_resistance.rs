@@ -4,15 +4,18 @@
 //! and 0.05, in bevy_rapier's Fixed mode with 1 and 2 substeps: a ball rolled at v0 across a
 //! level floor stops after v0² / (2 k μ_r g) within 2 % (k = 5/7 for a solid ball, 2/3 for a
 //! disc in 2D); on a slope below μ_r (tan θ = 0.8 μ_r) it holds, moving less than the laws'
-//! elastic ranges (μ_r/c + tan θ/c) over 5 s once formed; the same ball without rolling
-//! resistance keeps rolling (the resistance is off unless a material asks for it); a
-//! resisting ball despawned while it rolls leaves no joint behind.
+//! elastic ranges (μ_r/c + tan θ/c) over 5 s once formed, and `StickSlipRolling` reads back
+//! the torque of statics, R m g sin θ, within 2 %; a resistance that breaks away at 0.05 and
+//! rolls at 0.03 brakes a rolled ball at 0.03 (the closed form within 2 %) and holds one put on
+//! a slope between the two; the same ball without rolling resistance
+//! keeps rolling (the resistance is off unless a material asks for it); a resisting ball
+//! despawned while it rolls leaves no joint and no read-back behind.
 
 mod common;
 
 use bevy::prelude::*;
 use common::bevy_rapier::prelude::*;
-use common::stickslip_bevy_rapier::StickSlipFriction;
+use common::stickslip_bevy_rapier::{StickSlipFriction, StickSlipRolling};
 use common::stickslip_rapier::FrictionMaterial;
 use common::*;
 use stickslip_core::law::Law;
@@ -42,6 +45,11 @@ fn material(mu_r: f64) -> FrictionMaterial {
 /// A ball of radius [`R`] resting on the common ground (top at y = 0.1), both with
 /// `material(mu_r)`, gravity tilted to `tan`.
 fn scene(substeps: usize, tan: f64, mu_r: f64) -> (App, Entity) {
+    scene_with(substeps, tan, material(mu_r))
+}
+
+/// As [`scene`], both with `material`.
+fn scene_with(substeps: usize, tan: f64, material: FrictionMaterial) -> (App, Entity) {
     let mut app = app(
         TimestepMode::Fixed {
             dt: DT as f32,
@@ -50,7 +58,7 @@ fn scene(substeps: usize, tan: f64, mu_r: f64) -> (App, Entity) {
         DT,
     );
     incline(&mut app, tan);
-    ground(&mut app, material(mu_r));
+    ground(&mut app, material.clone());
     let ball = app
         .world_mut()
         .spawn((
@@ -59,7 +67,7 @@ fn scene(substeps: usize, tan: f64, mu_r: f64) -> (App, Entity) {
             ColliderMassProperties::Density(1000.0),
             Velocity::zero(),
             Transform::from_xyz(0.0, 0.1 + R, 0.0),
-            StickSlipFriction(Some(material(mu_r))),
+            StickSlipFriction(Some(material)),
         ))
         .id();
     (app, ball)
@@ -122,13 +130,61 @@ fn a_ball_below_its_rolling_resistance_holds_on_a_slope() {
             run_for(&mut app, 5.0);
             let moved = (x_v(&app, ball).0 - x0).abs();
             let range = mu_r / C + tan / C;
+            let reports = &app.world().resource::<StickSlipRolling>().0;
+            assert_eq!(reports.len(), 1, "one resisting pair");
+            let torque = Vec3::from(reports[0].rolling_torque).length() as f64;
+            // The ball's mass at density 1000: a solid ball, a disc in 2D.
+            let r = R as f64;
+            let mass = if cfg!(dim2) {
+                1000.0 * std::f64::consts::PI * r * r
+            } else {
+                1000.0 * 4.0 / 3.0 * std::f64::consts::PI * r.powi(3)
+            };
+            let statics = r * mass * G * tan.atan().sin();
             println!(
-                "{substeps} substeps, μ_r {mu_r}, tan θ {tan}: moved {:.3} µm in 5 s (range {:.3} µm)",
+                "{substeps} substeps, μ_r {mu_r}, tan θ {tan}: moved {:.3} µm in 5 s (range {:.3} µm), torque {torque:.5} N·m (statics {statics:.5})",
                 moved * 1e6,
                 range * 1e6
             );
             assert!(moved < range, "moved {moved} m (range {range} m)");
+            assert!(
+                (torque / statics - 1.0).abs() < 0.02,
+                "torque {torque} N·m, statics {statics}"
+            );
         }
+    }
+}
+
+#[test]
+fn a_resistance_with_break_away_above_its_rolling_level_rolls_at_the_rolling_level() {
+    let law = Law::elasto_plastic(C, 0.05, 0.05, Curve::constant(0.03).unwrap()).unwrap();
+    let stribeck = FrictionMaterial::new(sharp(0.5)).with_rolling(law);
+    for substeps in [1, 2] {
+        let v0 = 0.5;
+        let (mut app, ball) = scene_with(substeps, 0.0, stribeck.clone());
+        run_for(&mut app, 0.25);
+        roll(&mut app, ball, v0 as f32);
+        let (x0, _) = x_v(&app, ball);
+        run_for(&mut app, 1.5 * v0 / (ROLL * 0.03 * G));
+        let (x, _) = x_v(&app, ball);
+        let expected = v0 * v0 / (2.0 * ROLL * 0.03 * G);
+        let error = (x - x0) / expected - 1.0;
+        println!(
+            "{substeps} substeps: stopped after {:.4} m, closed form at μ_k {expected:.4} m ({:+.2} %)",
+            x - x0,
+            error * 100.0
+        );
+        assert!(error.abs() < 0.02, "{substeps} substeps: {} m", x - x0);
+
+        let tan = 0.04;
+        let (mut app, ball) = scene_with(substeps, tan, stribeck.clone());
+        run_for(&mut app, 0.5);
+        let (x0, _) = x_v(&app, ball);
+        run_for(&mut app, 5.0);
+        let moved = (x_v(&app, ball).0 - x0).abs();
+        let range = 0.05 / C + tan / C;
+        println!("{substeps} substeps, tan θ {tan}: moved {:.3} µm in 5 s", moved * 1e6);
+        assert!(moved < range, "moved {moved} m (range {range} m)");
     }
 }
 
@@ -164,7 +220,9 @@ fn a_despawned_rolling_ball_leaves_no_joint() {
         1,
         "the rolling ball resists through one joint"
     );
+    assert_eq!(app.world().resource::<StickSlipRolling>().0.len(), 1);
     app.world_mut().despawn(ball);
     run_for(&mut app, 0.5);
     assert_eq!(joints(&mut app), 0);
+    assert!(app.world().resource::<StickSlipRolling>().0.is_empty());
 }

@@ -100,6 +100,29 @@ impl<C, const D: usize> RollingReport<C, D> {
     }
 }
 
+impl<C> RollingReport<C, 2> {
+    /// The 2D report in 3D (point and normal with z = 0; torques are 3D already), for
+    /// read-backs that take both (bevy's).
+    pub fn in_3d(self) -> RollingReport<C, 3> {
+        let lift = |[x, y]: [f32; 2]| [x, y, 0.0];
+        RollingReport {
+            collider1: self.collider1,
+            collider2: self.collider2,
+            point: lift(self.point),
+            normal: lift(self.normal),
+            normal_force: self.normal_force,
+            rolling_arm: self.rolling_arm,
+            spinning_arm: self.spinning_arm,
+            rolling: self.rolling,
+            rolling_limit: self.rolling_limit,
+            rolling_torque: self.rolling_torque,
+            spinning: self.spinning,
+            spinning_limit: self.spinning_limit,
+            spinning_torque: self.spinning_torque,
+        }
+    }
+}
+
 /// |torque| / (arm · normal force), 0 without load or arm.
 fn effective(torque: [f32; 3], arm: f32, normal_force: f64) -> f64 {
     let lever = arm as f64 * normal_force;
@@ -128,5 +151,19 @@ mod tests {
         let named = r.with_colliders("a", "b");
         assert_eq!((named.collider1, named.collider2), ("a", "b"));
         assert_eq!(named.rolling_torque, r.rolling_torque);
+    }
+
+    #[test]
+    fn a_2d_report_in_3d_lifts_point_and_normal_and_keeps_the_rest() {
+        let mut r = RollingReport::<u32, 2>::new(1, 2);
+        r.point = [1.0, 2.0];
+        r.normal = [0.0, 1.0];
+        r.rolling_torque = [0.0, 0.0, -0.3];
+        r.normal_force = 5.0;
+        let lifted = r.in_3d();
+        assert_eq!(lifted.point, [1.0, 2.0, 0.0]);
+        assert_eq!(lifted.normal, [0.0, 1.0, 0.0]);
+        assert_eq!(lifted.rolling_torque, r.rolling_torque);
+        assert_eq!(lifted.normal_force, 5.0);
     }
 }
