@@ -1,5 +1,5 @@
 //! stickslip in an avian app, in a real window: three troughs of the same slope tan θ = 0.5,
-//! five parts on each, the same start.
+//! five parts on each, the same start, and a lane of rolling balls.
 //!
 //! 1. **avian's `Friction::new(0.4)`**: what avian alone does with a material of static
 //!    coefficient 0.6 and dynamic 0.4 (avian reads only the dynamic one): tan θ > 0.4, the
@@ -13,6 +13,11 @@
 //!    parts flow. They settle at the speed where the mean sliding friction
 //!    μ0 (1 − α Ψ(β)) equals tan θ (Popov 2020, Eq. 33): the HUD shows it beside the measured
 //!    speed.
+//! 4. **Rolling resistance** (`FrictionMaterial::with_rolling`), on a lane of tan θ = 0.08: three
+//!    balls side by side, the EP material without rolling resistance (rolls down at
+//!    a = 5/7 g sin θ), with μ_r = 0.12 above tan θ (holds) and with μ_r = 0.04 below it (rolls
+//!    at a = 5/7 g (sin θ − μ_r cos θ)). Balls are coloured by their rolling regime
+//!    (`StickSlipRolling`: green held, red rolling, white without rolling resistance).
 //!
 //! Like with like: a part's speed (or acceleration) counts from the end of its start-up
 //! transient to now, over parts that have not been restarted since; the HUD says "settling"
@@ -41,7 +46,7 @@ use stickslip_avian::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color
 use stickslip_avian::window::{Hud, WindowedApp, caption, command_line, hud_box, time_keys};
 use stickslip_avian::{
     FrictionMaterial, StickSlipAvianPlugin, StickSlipContacts, StickSlipFriction,
-    StickSlipVibration, VibrationSource,
+    StickSlipRolling, StickSlipVibration, VibrationSource,
 };
 use stickslip_core::contact::{Amplitude, VibrationDirection, VibrationMode};
 use stickslip_core::law::{Law, Regime};
@@ -63,9 +68,16 @@ const F_POPOV: f64 = 20_000.0;
 /// Physics rate (Hz); avian solves each tick in its default 6 substeps.
 const PHYSICS_HZ: f64 = 240.0;
 const G: f32 = 9.81;
+/// Slope tan θ of the rolling lane, its balls' radius (m), and their rolling resistance μ_r
+/// (none, above tan θ, below it).
+const ROLL_SLOPE: f32 = 0.08;
+const BALL: f32 = 0.04;
+const MU_R: [f64; 3] = [0.0, 0.12, 0.04];
+/// The balls' places across the rolling lane (m from its centre line).
+const ACROSS: [f32; 3] = [-0.15, 0.0, 0.15];
 /// Trough centres along z, the troughs' length (m), the first part's start position along
 /// them and where parts start over.
-const LANES: [f32; 3] = [-0.8, 0.0, 0.8];
+const LANES: [f32; 4] = [-0.8, 0.0, 0.8, 1.8];
 const LENGTH: f32 = 3.0;
 const START: f32 = -1.3;
 const END: f32 = 1.3;
@@ -77,7 +89,7 @@ const HALF: f32 = 0.04;
 /// forms in a few ticks on troughs 1 and 2; on trough 3 the speed approaches Popov's v*
 /// within a second or two (`tests/conveyor.rs`: 0.13 % below it from 2 s on; this HUD at 4 s,
 /// counting from 1.5 s: 0.4 % below).
-const SETTLE: [f64; 3] = [0.2, 0.2, 1.5];
+const SETTLE: [f64; 4] = [0.2, 0.2, 1.5, 0.2];
 
 fn main() -> AppExit {
     let Some((shot, _)) = command_line("avian_conveyor [--screenshot PATH] [--frames N]", 120, 0)
@@ -125,6 +137,8 @@ struct Theory {
     slide: f32,
     /// Popov's conveying speed of trough 3 (m/s).
     popov: f64,
+    /// The rolling balls' accelerations (m/s²; 0 for the one held).
+    rolling: [f32; 3],
 }
 
 impl Theory {
@@ -133,19 +147,27 @@ impl Theory {
         // μ0 (1 − α Ψ(β*)) = tan θ, β* = c v*/(μ0 α f).
         let target = (1.0 - SLOPE as f64 / MU0) / ALPHA;
         let beta = popov::beta_at_psi(&Waveform::Sine, target).unwrap_or(f64::NAN);
+        let roll = ROLL_SLOPE.atan();
         Theory {
             slide: G * (theta.sin() - MU_K * theta.cos()),
             popov: beta * MU0 * ALPHA * F_POPOV / C,
+            rolling: MU_R.map(|mu_r| {
+                let mu_r = mu_r as f32;
+                // A solid ball rolls at 5/7 of a sliding point's acceleration.
+                (5.0 / 7.0 * G * (roll.sin() - mu_r * roll.cos())).max(0.0)
+            }),
         }
     }
 }
 
-/// A part: its trough (0, 1 or 2) and start position along it (m).
+/// A part: its trough (0, 1 or 2; 3 the rolling lane), start position along it (m), and on
+/// the rolling lane its ball (0, 1, 2).
 #[derive(Component)]
 #[require(RegimeTally, Shown, Run)]
 struct Part {
     lane: usize,
     home: f32,
+    ball: usize,
 }
 
 /// A part's run since it was (re)started: when, and its state along the trough once the
@@ -206,18 +228,40 @@ struct Palette {
     airborne: Handle<StandardMaterial>,
     regimes: [Handle<StandardMaterial>; 3],
     part: Handle<Mesh>,
+    ball: Handle<Mesh>,
 }
 
 /// Downhill direction and the trough's pose.
 fn lane_frame(lane: usize) -> (Vec3, Quat, Vec3) {
-    let tilt = Quat::from_rotation_z(-SLOPE.atan());
+    let slope = if lane == 3 { ROLL_SLOPE } else { SLOPE };
+    let tilt = Quat::from_rotation_z(-slope.atan());
     (tilt * Vec3::X, tilt, Vec3::new(0.0, 0.0, LANES[lane]))
 }
 
 /// A point at `along` metres on trough `lane`, `up` metres above its surface.
 fn on_lane(lane: usize, along: f32, up: f32) -> Vec3 {
+    on_lane_at(lane, along, up, 0.0)
+}
+
+/// As [`on_lane`], `across` metres from the trough's centre line.
+fn on_lane_at(lane: usize, along: f32, up: f32, across: f32) -> Vec3 {
     let (_, rotation, centre) = lane_frame(lane);
-    centre + rotation * Vec3::new(along, 0.05 + up, 0.0)
+    centre + rotation * Vec3::new(along, 0.05 + up, across)
+}
+
+/// The rolling lane's friction (the EP material of trough 3, no vibration) and a ball's, with
+/// its rolling resistance μ_r (a sharp elasto-plastic law) above 0.
+fn rolling_material(mu_r: f64) -> StickSlipFriction {
+    let sharp = |mu: f64| {
+        let curve = Curve::constant(mu).expect("positive");
+        Law::elasto_plastic(C, mu, mu, curve).expect("valid law")
+    };
+    let material = FrictionMaterial::new(sharp(MU0));
+    StickSlipFriction(Some(if mu_r > 0.0 {
+        material.with_rolling(sharp(mu_r))
+    } else {
+        material
+    }))
 }
 
 /// Trough `lane`'s friction and its parts': avian's `Friction` without and with its static
@@ -226,6 +270,7 @@ fn lane_friction(lane: usize) -> (Friction, Option<StickSlipFriction>) {
     match lane {
         0 => (Friction::new(MU_K), None),
         1 => (Friction::new(MU_K).with_static_coefficient(MU_S), None),
+        3 => (Friction::default(), Some(rolling_material(0.0))),
         _ => {
             let curve = Curve::constant(MU0).expect("positive");
             let law = Law::elasto_plastic(C, MU0, MU0, curve).expect("valid law");
@@ -265,7 +310,7 @@ fn setup(
     contacts.point_radius = 0.012;
     commands.spawn((
         Camera3d::default(),
-        Transform::from_xyz(0.45, 2.35, 3.4).looking_at(Vec3::new(0.45, 0.0, -0.2), Vec3::Y),
+        Transform::from_xyz(0.45, 2.9, 4.4).looking_at(Vec3::new(0.45, 0.0, 0.2), Vec3::Y),
     ));
     commands.spawn((
         DirectionalLight {
@@ -285,6 +330,7 @@ fn setup(
     let metal = flat(Color::srgb(0.45, 0.48, 0.55));
     let shaker = flat(Color::srgb(0.3, 0.5, 0.85));
     let avian = flat(Color::srgb(0.55, 0.42, 0.3));
+    let rolling = flat(Color::srgb(0.35, 0.55, 0.4));
     commands.insert_resource(Palette {
         airborne: flat(Color::WHITE),
         regimes: [
@@ -293,15 +339,18 @@ fn setup(
             flat(regime_color(Regime::Sliding)),
         ],
         part: meshes.add(Cuboid::from_length(2.0 * HALF)),
+        ball: meshes.add(Sphere::new(BALL)),
     });
     let base_mesh = meshes.add(Cuboid::new(LENGTH, 0.1, 0.5));
     let wall_mesh = meshes.add(Cuboid::new(LENGTH, 0.12, 0.02));
-    for lane in 0..3 {
+    for lane in 0..4 {
         let (_, rotation, centre) = lane_frame(lane);
         let (friction, material) = lane_friction(lane);
         let mut base = commands.spawn((
             Mesh3d(base_mesh.clone()),
-            MeshMaterial3d([avian.clone(), metal.clone(), shaker.clone()][lane].clone()),
+            MeshMaterial3d(
+                [avian.clone(), metal.clone(), shaker.clone(), rolling.clone()][lane].clone(),
+            ),
             RigidBody::Static,
             Collider::cuboid(LENGTH, 0.1, 0.5),
             friction,
@@ -332,6 +381,10 @@ fn setup(
                 "3  stickslip EP mu0 {MU0}, Popov\n   normal vibration a {ALPHA}, {} kHz",
                 F_POPOV / 1000.0
             ),
+            format!(
+                "4  rolling resistance, tan {ROLL_SLOPE}:\n   mu_r none / {} / {}",
+                MU_R[1], MU_R[2]
+            ),
         ][lane]
             .clone();
         commands.spawn((LaneLabel(lane), caption(title)));
@@ -339,15 +392,42 @@ fn setup(
     commands.spawn(hud_box());
 }
 
-/// Five parts per trough at its upper end, at rest, with the trough's friction.
+/// Five parts per trough at its upper end, at rest, with the trough's friction; three balls
+/// side by side at the rolling lane's.
 fn spawn_parts(mut commands: Commands, palette: Res<Palette>, time: Res<Time<Fixed>>) {
+    let (_, rotation, _) = lane_frame(3);
+    for (ball, mu_r) in MU_R.into_iter().enumerate() {
+        commands.spawn((
+            Part {
+                lane: 3,
+                home: START,
+                ball,
+            },
+            Run {
+                started: time.elapsed_secs_f64(),
+                ..default()
+            },
+            Mesh3d(palette.ball.clone()),
+            MeshMaterial3d(palette.airborne.clone()),
+            RigidBody::Dynamic,
+            Collider::sphere(BALL),
+            rolling_material(mu_r),
+            SleepingDisabled,
+            Transform::from_translation(on_lane_at(3, START, BALL, ACROSS[ball]))
+                .with_rotation(rotation),
+        ));
+    }
     for lane in 0..3 {
         let (_, rotation, _) = lane_frame(lane);
         for k in 0..PARTS {
             let along = START + SPACING * k as f32;
             let (friction, material) = lane_friction(lane);
             let mut part = commands.spawn((
-                Part { lane, home: along },
+                Part {
+                    lane,
+                    home: along,
+                    ball: 0,
+                },
                 Run {
                     started: time.elapsed_secs_f64(),
                     ..default()
@@ -397,15 +477,21 @@ fn restart_parts(
         &mut Position,
         &mut Transform,
         &mut LinearVelocity,
+        &mut AngularVelocity,
         &mut Run,
     )>,
 ) {
-    for (part, mut position, mut transform, mut velocity, mut run) in &mut parts {
+    for (part, mut position, mut transform, mut velocity, mut spin, mut run) in &mut parts {
         let (dir, _, centre) = lane_frame(part.lane);
         if (position.0 - centre).dot(dir) > END {
-            position.0 = on_lane(part.lane, part.home, HALF + 0.002);
+            position.0 = if part.lane == 3 {
+                on_lane_at(3, part.home, BALL + 0.002, ACROSS[part.ball])
+            } else {
+                on_lane(part.lane, part.home, HALF + 0.002)
+            };
             transform.translation = position.0;
             velocity.0 = Vec3::ZERO;
+            spin.0 = Vec3::ZERO;
             run.restart(time.elapsed_secs_f64());
         }
     }
@@ -450,10 +536,17 @@ fn keys(
 /// asleep is not solved and keeps its colour.
 fn tally_regimes(
     contacts: Res<StickSlipContacts>,
-    mut parts: Query<(Entity, &mut RegimeTally), Without<Sleeping>>,
+    rolling: Res<StickSlipRolling>,
+    mut parts: Query<(Entity, &Part, &mut RegimeTally), Without<Sleeping>>,
 ) {
-    for (e, mut tally) in &mut parts {
-        let i = match contacts.regime_of(e) {
+    for (e, part, mut tally) in &mut parts {
+        // A ball: the regime of its rolling resistance (none without it).
+        let regime = if part.lane == 3 {
+            rolling.of(e).find_map(|r| r.rolling)
+        } else {
+            contacts.regime_of(e)
+        };
+        let i = match regime {
             Some(Regime::Sticking) => 0,
             Some(Regime::StickSlip) => 1,
             Some(Regime::Sliding) => 2,
@@ -493,9 +586,18 @@ fn colour_parts(
 /// Trough `lane`'s mean (speed, acceleration) over its parts' settled runs, and how many
 /// parts count.
 fn lane_rates(parts: &Query<(&Part, &Run)>, lane: usize) -> Option<(f32, f32, usize)> {
+    ball_rates(parts, lane, None)
+}
+
+/// As [`lane_rates`], of one ball of the lane (or all of its parts).
+fn ball_rates(
+    parts: &Query<(&Part, &Run)>,
+    lane: usize,
+    ball: Option<usize>,
+) -> Option<(f32, f32, usize)> {
     let rates: Vec<(f32, f32)> = parts
         .iter()
-        .filter(|(p, _)| p.lane == lane)
+        .filter(|(p, _)| p.lane == lane && ball.is_none_or(|b| b == p.ball))
         .filter_map(|(_, run)| run.rates())
         .collect();
     let n = rates.len();
@@ -538,6 +640,16 @@ fn hud(
     } else {
         "0          (vibration off: EP holds)".into()
     };
+    let ball = |b: usize| {
+        ball_rates(&parts, 3, Some(b)).map_or("settling".to_string(), |(v, a, _)| {
+            if b == 1 {
+                format!("{:+.2} mm/s", 1000.0 * v)
+            } else {
+                format!("a {a:+.3}")
+            }
+        })
+    };
+    let rolls = format!("{} | {} | {}", ball(0), ball(1), ball(2));
     let mut regimes = [0usize; 4];
     for s in &shown {
         regimes[s.0.min(3)] += 1;
@@ -549,6 +661,7 @@ fn hud(
          1  avian alone           {slide:<20} a {a:.3} m/s2  g (sin - {MU_K} cos): slides\n\
          2  stickslip, static     {hold:<20} 0  holds: tan {SLOPE} < mu_s {MU_S}\n\
          3  Popov vibration       {conveyed:<20} {popov}\n\
+         4  rolling: none|held|mu_r  {rolls}   theory a {r0:.3} | 0 | {r2:.3}: 5/7 g (sin - mu_r cos)\n\
          \n\
          parts   {st} sticking, {ss} stick-slip, {sl} sliding, {no} without stickslip contact\n\
          colours green sticking, orange stick-slip, red sliding, white avian's own\n\
@@ -556,6 +669,8 @@ fn hud(
         t = fixed.elapsed_secs_f64(),
         vib = if on { "ON" } else { "OFF" },
         a = theory.slide,
+        r0 = theory.rolling[0],
+        r2 = theory.rolling[2],
         st = regimes[0],
         ss = regimes[1],
         sl = regimes[2],
