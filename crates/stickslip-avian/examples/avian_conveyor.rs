@@ -45,8 +45,8 @@ use bevy::prelude::*;
 use stickslip_avian::debug::{StickSlipDebugPlugin, StickSlipGizmos, regime_color};
 use stickslip_avian::window::{Hud, WindowedApp, caption, command_line, hud_box, time_keys};
 use stickslip_avian::{
-    FrictionMaterial, StickSlipAvianPlugin, StickSlipContacts, StickSlipFriction,
-    StickSlipRolling, StickSlipVibration, VibrationSource,
+    FrictionMaterial, StickSlipAvianPlugin, StickSlipContacts, StickSlipFriction, StickSlipRolling,
+    StickSlipVibration, VibrationSource,
 };
 use stickslip_core::contact::{Amplitude, VibrationDirection, VibrationMode};
 use stickslip_core::law::{Law, Regime};
@@ -349,7 +349,13 @@ fn setup(
         let mut base = commands.spawn((
             Mesh3d(base_mesh.clone()),
             MeshMaterial3d(
-                [avian.clone(), metal.clone(), shaker.clone(), rolling.clone()][lane].clone(),
+                [
+                    avian.clone(),
+                    metal.clone(),
+                    shaker.clone(),
+                    rolling.clone(),
+                ][lane]
+                    .clone(),
             ),
             RigidBody::Static,
             Collider::cuboid(LENGTH, 0.1, 0.5),

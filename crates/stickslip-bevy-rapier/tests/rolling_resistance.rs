@@ -183,7 +183,10 @@ fn a_resistance_with_break_away_above_its_rolling_level_rolls_at_the_rolling_lev
         run_for(&mut app, 5.0);
         let moved = (x_v(&app, ball).0 - x0).abs();
         let range = 0.05 / C + tan / C;
-        println!("{substeps} substeps, tan θ {tan}: moved {:.3} µm in 5 s", moved * 1e6);
+        println!(
+            "{substeps} substeps, tan θ {tan}: moved {:.3} µm in 5 s",
+            moved * 1e6
+        );
         assert!(moved < range, "moved {moved} m (range {range} m)");
     }
 }
