@@ -67,8 +67,9 @@ struct Motion {
     inv_mass: f32,
     /// The largest inverse principal inertia, bounded from above (0 unless dynamic).
     inv_inertia: f32,
-    /// Dynamic or kinematic.
-    moves: bool,
+    /// Dynamic: a body the contact turns (a static or kinematic one's rolling arm is
+    /// infinite).
+    dynamic: bool,
 }
 
 impl World<'_, '_> {
@@ -88,7 +89,7 @@ impl World<'_, '_> {
             inv_inertia: i
                 .filter(|_| dynamic)
                 .map_or(0.0, dim::largest_inverse_inertia),
-            moves: !rb.is_static(),
+            dynamic,
         }
     }
 
@@ -307,7 +308,7 @@ pub(crate) fn apply(
                 });
             let body = |entity, motion: Motion, anchor| RollingBody {
                 entity,
-                moves: motion.moves,
+                dynamic: motion.dynamic,
                 angular: motion.angular,
                 inv_inertia: motion.inv_inertia,
                 anchor,

@@ -109,7 +109,8 @@ impl Plugin for StickSlipAvianPlugin {
                     .before(IntegrationSystems::Position),
                 relax_rows
                     .after(SubstepSolverSystems::Relax)
-                    .before(XpbdSolverSystems::SolveConstraints),
+                    .before(XpbdSolverSystems::SolveConstraints)
+                    .before(SubstepSolverSystems::Damping),
             ),
         );
     }

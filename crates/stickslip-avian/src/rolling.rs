@@ -22,7 +22,8 @@
 //! yields and the row brakes at the law's sliding level μ(R|ω|).
 //!
 //! **Arms and freedom** as in stickslip-rapier: R is the reduced distance of the bodies'
-//! centres of mass from the contact plane (a static body counts as infinitely large), a the
+//! centres of mass from the contact plane (a static or kinematic body counts as infinitely
+//! large), a the
 //! spread of the contact's points (R for a single point); a line of points rolls only about
 //! the line, a patch not at all (its normal rows hold every turn).
 //!
@@ -53,8 +54,9 @@ pub(crate) struct RotationLaws {
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct RollingBody {
     pub entity: Option<Entity>,
-    /// Whether it moves (dynamic or kinematic): a static body's arm is infinite.
-    pub moves: bool,
+    /// Whether it is dynamic: a static or kinematic body's arm is infinite (it is the ground
+    /// the other rolls on, as its contacts treat it).
+    pub dynamic: bool,
     pub angular: Angular,
     /// The largest inverse principal inertia, bounded from above (0 unless dynamic).
     pub inv_inertia: f32,
@@ -159,7 +161,7 @@ impl Rolling {
         }
         let n = contact.normal;
         let arm = |b: RollingBody| {
-            if b.moves {
+            if b.dynamic {
                 b.anchor.dot(n).abs()
             } else {
                 f32::INFINITY
@@ -215,9 +217,9 @@ impl Rolling {
         // cap the solve reached reads as the law's limit, whatever the load did since).
         let normal_impulse = r.normal_force * self.last_dt / r.substeps.max(1) as f64;
         let mu_of = |j: World, arm: f32| -> World {
-            if normal_impulse > 0.0 {
-                let k = (-1.0 / (arm as f64 * normal_impulse)) as f32;
-                [j[0] * k, j[1] * k, j[2] * k]
+            let lever = arm as f64 * normal_impulse;
+            if lever > 0.0 {
+                j.map(|x| (-(x as f64) / lever) as f32)
             } else {
                 [0.0; 3]
             }
@@ -273,6 +275,7 @@ impl Rolling {
             }
             let last = add(r.last[0], r.last[1]);
             let warm = dot_angular(last, axis).clamp(-max, max);
+            let warm = if warm.is_finite() { warm } else { 0.0 };
             self.rows.push(Row {
                 pair,
                 bodies: [b1.entity, b2.entity],
@@ -332,28 +335,54 @@ fn world_of(axis: Angular, lambda: f32) -> World {
 /// The solver bodies the rows act on.
 type Bodies<'w, 's> = Query<'w, 's, (&'static mut SolverBody, &'static SolverBodyInertia)>;
 
-/// A body's angular velocity and world inverse inertia applied to `axis` (zero for a static
-/// or sleeping body: no solver body).
-fn body(bodies: &Bodies, e: Option<Entity>, axis: Angular) -> (Angular, Angular) {
-    e.and_then(|e| bodies.get(e).ok())
-        .map_or((Angular::default(), Angular::default()), |(b, i)| {
-            (b.angular_velocity, i.effective_inv_angular_inertia() * axis)
-        })
+/// The dominance of a static or sleeping body (no solver body), as avian's of a kinematic
+/// one: above any dynamic body's.
+const IMMOVABLE: i16 = i8::MAX as i16 + 1;
+
+/// A body's angular velocity and world inverse inertia applied to `axis`, and its dominance
+/// (a static or sleeping body has no solver body: at rest, immovable).
+fn body(bodies: &Bodies, e: Option<Entity>, axis: Angular) -> (Angular, Angular, i16) {
+    e.and_then(|e| bodies.get(e).ok()).map_or(
+        (Angular::default(), Angular::default(), IMMOVABLE),
+        |(b, i)| {
+            (
+                b.angular_velocity,
+                i.effective_inv_angular_inertia() * axis,
+                i.dominance(),
+            )
+        },
+    )
+}
+
+/// The two bodies of a row: their angular velocities and inverse inertias applied to its
+/// axis, the dominant one's (a kinematic body, or a higher `Dominance`) zero, as avian's
+/// contacts treat them: a row does not push a kinematic platform or a dominant body.
+fn pair_of(bodies: &Bodies, row: &Row) -> ((Angular, Angular), (Angular, Angular)) {
+    let (w1, i1, d1) = body(bodies, row.bodies[0], row.axis);
+    let (w2, i2, d2) = body(bodies, row.bodies[1], row.axis);
+    let zero = Angular::default();
+    let (i1, i2) = match d1.cmp(&d2) {
+        std::cmp::Ordering::Greater => (zero, i2),
+        std::cmp::Ordering::Less => (i1, zero),
+        std::cmp::Ordering::Equal => (i1, i2),
+    };
+    ((w1, i1), (w2, i2))
 }
 
 /// One pass over the rows: each drives its axis' relative angular velocity to its target
-/// within its cap.
+/// within its cap. A non-finite impulse (from a body's non-finite velocity) starts over at
+/// zero instead of staying in the rows and the warm start.
 fn solve(rows: &mut [Row], bodies: &mut Bodies) {
     for row in rows.iter_mut() {
-        let (w1, i1) = body(bodies, row.bodies[0], row.axis);
-        let (w2, i2) = body(bodies, row.bodies[1], row.axis);
+        let ((w1, i1), (w2, i2)) = pair_of(bodies, row);
         let k = dot(row.axis, i1) + dot(row.axis, i2);
         if k.is_nan() || k <= 0.0 {
             continue;
         }
         let v = dot(row.axis, w2 - w1) - row.target;
         let old = row.lambda;
-        row.lambda = (old - v / k).clamp(-row.max, row.max);
+        let lambda = (old - v / k).clamp(-row.max, row.max);
+        row.lambda = if lambda.is_finite() { lambda } else { 0.0 };
         push(bodies, row.bodies, (i1, i2), row.lambda - old);
     }
 }
@@ -361,7 +390,7 @@ fn solve(rows: &mut [Row], bodies: &mut Bodies) {
 /// Applies an impulse `d` along a row (i1, i2: the bodies' inverse inertia applied to its
 /// axis): +d on body 2, −d on body 1.
 fn push(bodies: &mut Bodies, [e1, e2]: [Option<Entity>; 2], (i1, i2): (Angular, Angular), d: f32) {
-    if d == 0.0 {
+    if d == 0.0 || !d.is_finite() {
         return;
     }
     if let Some(Ok((mut b, _))) = e1.map(|e| bodies.get_mut(e)) {
@@ -385,8 +414,7 @@ fn dot(a: Angular, b: Angular) -> f32 {
 /// Substep: applies the rows' warm start (the last substep's impulses).
 pub(crate) fn warm_start(mut rolling: ResMut<Rolling>, mut bodies: Bodies) {
     for row in rolling.rows.iter_mut() {
-        let (_, i1) = body(&bodies, row.bodies[0], row.axis);
-        let (_, i2) = body(&bodies, row.bodies[1], row.axis);
+        let ((_, i1), (_, i2)) = pair_of(&bodies, row);
         push(&mut bodies, row.bodies, (i1, i2), row.lambda);
     }
 }
@@ -419,6 +447,10 @@ pub(crate) fn collect(mut rolling: ResMut<Rolling>, mut read_back: ResMut<StickS
             r.impulse[row.kind] = add(r.impulse[row.kind], world_of(row.axis, row.total));
             r.last[row.kind] = add(r.last[row.kind], world_of(row.axis, row.lambda));
         }
+    }
+    // Read without writing while nothing resists (no change detection every tick).
+    if rolling.pairs.is_empty() && read_back.0.is_empty() {
+        return;
     }
     read_back.0.clear();
     if rolling.pairs.is_empty() {

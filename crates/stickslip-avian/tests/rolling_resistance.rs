@@ -364,3 +364,49 @@ fn rollers_hold_below_and_roll_at_the_closed_form_above_their_rolling_resistance
         }
     }
 }
+
+/// A kinematic body is not pushed by the rows (avian's contacts treat it as dominant): a
+/// resisting ball rolled across a kinematic platform at rest stops as on a static floor, and
+/// the platform does not turn.
+#[test]
+fn a_kinematic_platform_is_not_turned_by_a_resisting_ball() {
+    let mu_r = 0.05;
+    let v0 = 0.5;
+    let mut app = app(true, 6, 0.0);
+    let platform = app
+        .world_mut()
+        .spawn((
+            RigidBody::Kinematic,
+            cuboid_collider(400.0, 0.2, 20.0),
+            Transform::from_xyz(0.0, -0.1, 0.0),
+            StickSlipFriction(Some(material(mu_r, 0.0))),
+        ))
+        .id();
+    let ball = app
+        .world_mut()
+        .spawn((
+            RigidBody::Dynamic,
+            ball_collider(R),
+            Mass(1.0),
+            Transform::from_xyz(0.0, R, 0.0),
+            SleepingDisabled,
+            StickSlipFriction(Some(material(mu_r, 0.0))),
+        ))
+        .id();
+    run_for(&mut app, 0.25);
+    roll(&mut app, ball, v0 as f32);
+    let x0 = position(&app, ball).x as f64;
+    run_for(&mut app, 1.5 * v0 / (ROLL * mu_r * G));
+    let moved = position(&app, ball).x as f64 - x0;
+    let expected = v0 * v0 / (2.0 * ROLL * mu_r * G);
+    let spin = app
+        .world()
+        .get::<AngularVelocity>(platform)
+        .unwrap()
+        .clone();
+    println!(
+        "on a kinematic platform: stopped after {moved:.4} m (closed form {expected:.4} m), platform spin {spin:?}"
+    );
+    assert!((moved / expected - 1.0).abs() < 0.02, "{moved} m");
+    assert_eq!(spin, AngularVelocity::default());
+}

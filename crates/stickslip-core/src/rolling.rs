@@ -64,7 +64,7 @@ where
 }
 
 /// The rolling arm of two bodies whose centres of mass are `r1` and `r2` from the contact
-/// plane (infinite for a fixed body or none): R₁R₂/(R₁+R₂), the other's when one is infinite.
+/// plane (infinite for a fixed or kinematic body or none): R₁R₂/(R₁+R₂), the other's when one is infinite.
 pub fn reduced_arm(r1: f32, r2: f32) -> f32 {
     if r1.is_infinite() {
         r2

@@ -26,7 +26,7 @@
 //!
 //! **Arms.** From the shapes at the contact: R_i is the distance from body i's centre of mass
 //! to the contact plane (a ball's radius, a cylinder's on its side), R = R₁R₂/(R₁+R₂) (a
-//! fixed body counts as infinitely large); a is the spread of the contact's points (their
+//! fixed or kinematic body counts as infinitely large); a is the spread of the contact's points (their
 //! largest distance from their centroid), or R for a single point.
 //!
 //! **What rolls.** A contact of one point (a ball) rolls about any axis of the contact plane;
@@ -137,10 +137,10 @@ fn set_motor(joint: &mut GenericJoint, axis: JointAxis, max: f64, target: f64) {
 }
 
 /// The distance from a body's centre of mass to the contact plane through `p` with normal
-/// `n`; infinite for a fixed body or none.
+/// `n`; infinite for a fixed or kinematic body or none (the ground the other rolls on).
 fn arm_of(bodies: &RigidBodySet, h: Option<RigidBodyHandle>, p: Vector, n: Vector) -> f32 {
     match h.and_then(|h| bodies.get(h)) {
-        Some(b) if !b.is_fixed() => (p - b.center_of_mass()).dot(n).abs(),
+        Some(b) if b.is_dynamic() => (p - b.center_of_mass()).dot(n).abs(),
         _ => f32::INFINITY,
     }
 }
