@@ -399,11 +399,7 @@ fn a_kinematic_platform_is_not_turned_by_a_resisting_ball() {
     run_for(&mut app, 1.5 * v0 / (ROLL * mu_r * G));
     let moved = position(&app, ball).x as f64 - x0;
     let expected = v0 * v0 / (2.0 * ROLL * mu_r * G);
-    let spin = app
-        .world()
-        .get::<AngularVelocity>(platform)
-        .unwrap()
-        .clone();
+    let spin = *app.world().get::<AngularVelocity>(platform).unwrap();
     println!(
         "on a kinematic platform: stopped after {moved:.4} m (closed form {expected:.4} m), platform spin {spin:?}"
     );

@@ -5,7 +5,9 @@
 //! level floor stops after v0² / (2 k μ_r g) within 2 % (k = 5/7 for a solid ball, 2/3 for a
 //! disc in 2D); on a slope below μ_r (tan θ = 0.8 μ_r) it holds, moving less than the laws'
 //! elastic ranges (μ_r/c + tan θ/c) over 5 s once formed, and `StickSlipRolling` reads back
-//! the torque of statics, R m g sin θ, within 2 %; a resistance that breaks away at 0.05 and
+//! the torque of statics, R m g sin θ, within 2 %; above μ_r (tan θ = 2 μ_r) it rolls down at
+//! k g (sin θ − μ_r cos θ) within 2 %; spun at 10 rad/s about the normal (3D, spinning
+//! resistance μ_spin) it stops after I ω0 / (μ_spin R m g) within 2 %; a resistance that breaks away at 0.05 and
 //! rolls at 0.03 brakes a rolled ball at 0.03 (the closed form within 2 %) and holds one put on
 //! a slope between the two; the same ball without rolling resistance
 //! keeps rolling (the resistance is off unless a material asks for it); a resisting ball
@@ -43,7 +45,8 @@ fn material(mu_r: f64) -> FrictionMaterial {
 }
 
 /// A ball of radius [`R`] resting on the common ground (top at y = 0.1), both with
-/// `material(mu_r)`, gravity tilted to `tan`.
+/// `material(mu_r)`, gravity tilted to `tan`. It never sleeps (rapier puts a slowly rolling
+/// ball to sleep within half a second).
 fn scene(substeps: usize, tan: f64, mu_r: f64) -> (App, Entity) {
     scene_with(substeps, tan, material(mu_r))
 }
@@ -66,6 +69,7 @@ fn scene_with(substeps: usize, tan: f64, material: FrictionMaterial) -> (App, En
             Collider::ball(R),
             ColliderMassProperties::Density(1000.0),
             Velocity::zero(),
+            Sleeping::disabled(),
             Transform::from_xyz(0.0, 0.1 + R, 0.0),
             StickSlipFriction(Some(material)),
         ))
@@ -228,4 +232,66 @@ fn a_despawned_rolling_ball_leaves_no_joint() {
     run_for(&mut app, 0.5);
     assert_eq!(joints(&mut app), 0);
     assert!(app.world().resource::<StickSlipRolling>().0.is_empty());
+}
+
+/// Above its rolling resistance (tan θ = 2 μ_r) a ball rolls down at k g (sin θ − μ_r cos θ)
+/// within 2 %.
+#[test]
+fn above_its_rolling_resistance_a_ball_rolls_down_at_the_closed_form_acceleration() {
+    for substeps in [1, 2] {
+        for mu_r in [0.01f64, 0.05] {
+            let tan = 2.0 * mu_r;
+            let theta = tan.atan();
+            let (mut app, ball) = scene(substeps, tan, mu_r);
+            run_for(&mut app, 0.25);
+            let (_, v0) = x_v(&app, ball);
+            run_for(&mut app, 1.0);
+            let a = x_v(&app, ball).1 - v0;
+            let expected = ROLL * G * (theta.sin() - mu_r * theta.cos());
+            let error = a / expected - 1.0;
+            println!(
+                "{substeps} substeps, μ_r {mu_r}, tan θ {tan}: a {a:.5} m/s², closed form {expected:.5} ({:+.2} %)",
+                error * 100.0
+            );
+            assert!(
+                error.abs() < 0.02,
+                "{substeps} substeps μ_r {mu_r}: {a} m/s²"
+            );
+        }
+    }
+}
+
+/// A solid ball spun at ω0 about the normal (3D) stops after I ω0 / (μ_spin R m g) (the arm of
+/// a single point is R) within 2 %.
+#[cfg(not(dim2))]
+#[test]
+fn a_spinning_ball_stops_after_the_closed_form_time() {
+    for substeps in [1, 2] {
+        for mu_spin in [0.01f64, 0.05] {
+            let w0 = 10.0;
+            let material = FrictionMaterial::new(sharp(0.5)).with_spinning(sharp(mu_spin));
+            let (mut app, ball) = scene_with(substeps, 0.0, material);
+            run_for(&mut app, 0.25);
+            app.world_mut().get_mut::<Velocity>(ball).unwrap().angular =
+                Vec3::new(0.0, w0 as f32, 0.0);
+            let expected = 0.4 * R as f64 * w0 / (mu_spin * G);
+            let spin = |app: &App| app.world().get::<Velocity>(ball).unwrap().angular.y as f64;
+            let (mut ticks, mut before) = (0, w0);
+            while spin(&app) > 1e-3 * w0 {
+                before = spin(&app);
+                app.update();
+                ticks += 1;
+                assert!(ticks as f64 * DT < 2.0 * expected, "still spinning");
+            }
+            // The spin falls linearly: where its last tick's line crosses zero.
+            let last = before / (before - spin(&app));
+            let stopped = (ticks as f64 - 1.0 + last.min(1.0)) * DT;
+            let error = stopped / expected - 1.0;
+            println!(
+                "{substeps} substeps, μ_spin {mu_spin}: stopped after {stopped:.4} s, closed form {expected:.4} s ({:+.2} %)",
+                error * 100.0
+            );
+            assert!(error.abs() < 0.02, "{stopped} s");
+        }
+    }
 }
