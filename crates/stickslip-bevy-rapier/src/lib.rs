@@ -77,7 +77,7 @@ pub use stickslip_bevy::debug;
 pub use stickslip_bevy::window;
 pub use stickslip_bevy::{
     ContactReport, RegimeChanged, RollingReport, StickSlipContacts, StickSlipFriction,
-    StickSlipRolling, StickSlipVibration, SurfaceVelocity,
+    StickSlipVibration, SurfaceVelocity,
 };
 /// The engine-free core (laws, sliding curves, vibration sources), so an app needs no second
 /// stickslip dependency.
@@ -165,7 +165,6 @@ where
             self.default_material.clone(),
         )))
         .init_resource::<StickSlipContacts>()
-        .init_resource::<StickSlipRolling>()
         .init_resource::<state::LastRegimes>()
         .add_message::<RegimeChanged>()
         .add_systems(

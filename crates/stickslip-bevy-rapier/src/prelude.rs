@@ -1,7 +1,7 @@
 //! What a bevy_rapier app names: `use stickslip_bevy_rapier::prelude::*;`.
 pub use crate::{
     ContactReport, RegimeChanged, RollingReport, StickSlipContacts, StickSlipFriction,
-    StickSlipRapier, StickSlipRapierPlugin, StickSlipRolling, StickSlipVibration, SurfaceVelocity,
+    StickSlipRapier, StickSlipRapierPlugin, StickSlipVibration, SurfaceVelocity,
 };
 // The core's prelude without `Curve`, which bevy's prelude names too (bevy_math's `Curve`):
 // name it as `core::sliding_curve::Curve`.

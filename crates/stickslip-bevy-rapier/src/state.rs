@@ -2,10 +2,9 @@
 //! each rapier step (contacts as entities, regime changes).
 
 use bevy::prelude::*;
-use bevy_rapier::rapier::dynamics::ImpulseJointSet;
 use bevy_rapier::rapier::geometry::{ColliderHandle, ColliderSet};
 use std::collections::HashMap;
-use stickslip_bevy::{RegimeChanged, StickSlipContacts, StickSlipRolling};
+use stickslip_bevy::{RegimeChanged, StickSlipContacts};
 use stickslip_core::law::Regime;
 use stickslip_rapier::StickSlip;
 
@@ -107,28 +106,4 @@ pub(crate) fn publish_reports(
         }
     }
     last.0 = now;
-}
-
-/// After a rapier step: the pairs resisting rolling or spinning as entities, their torques
-/// from the motors of stickslip's joints in `joints`.
-pub(crate) fn publish_rolling(
-    state: &StickSlipRapier,
-    colliders: &ColliderSet,
-    joints: &ImpulseJointSet,
-    rolling: &mut StickSlipRolling,
-) {
-    rolling.0.clear();
-    let entity = |h: ColliderHandle| {
-        colliders
-            .get(h)
-            .map(|c| Entity::from_bits(c.user_data as u64))
-    };
-    for r in state.modifier.rolling_reports(joints) {
-        let (Some(entity1), Some(entity2)) = (entity(r.collider1), entity(r.collider2)) else {
-            continue;
-        };
-        #[cfg(dim2)]
-        let r = r.in_3d();
-        rolling.0.push(r.with_colliders(entity1, entity2));
-    }
 }

@@ -4,7 +4,7 @@
 //! where nothing can be done between two steps.
 
 use crate::hooks::{StepHooks, UserHooks};
-use crate::state::{LastRegimes, StickSlipRapier, publish_reports, publish_rolling};
+use crate::state::{LastRegimes, StickSlipRapier, publish_reports};
 use bevy::ecs::system::{StaticSystemParam, SystemParam, SystemParamItem};
 use bevy::prelude::*;
 use bevy_rapier::plugin::context::{
@@ -12,7 +12,7 @@ use bevy_rapier::plugin::context::{
     RapierRigidBodySet, SimulationToRenderTime,
 };
 use bevy_rapier::prelude::*;
-use stickslip_bevy::{RegimeChanged, StickSlipContacts, StickSlipRolling};
+use stickslip_bevy::{RegimeChanged, StickSlipContacts};
 
 /// The rapier steps of one frame, exactly as bevy_rapier 0.36's `step_simulation` runs them.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -99,7 +99,6 @@ impl FrameSteps {
 #[derive(SystemParam)]
 pub(crate) struct StepOutputs<'w> {
     contacts: ResMut<'w, StickSlipContacts>,
-    rolling: ResMut<'w, StickSlipRolling>,
     last: ResMut<'w, LastRegimes>,
     changed: MessageWriter<'w, RegimeChanged>,
     collision_events: MessageWriter<'w, CollisionEvent>,
@@ -212,12 +211,6 @@ pub(crate) fn step_simulation_bracketed<H>(
                         &mut out.contacts,
                         &mut out.last,
                         &mut out.changed,
-                    );
-                    publish_rolling(
-                        state,
-                        &colliders.colliders,
-                        &joints.impulse_joints,
-                        &mut out.rolling,
                     );
                 }
             }

@@ -4,7 +4,7 @@
 //! and 0.05, in bevy_rapier's Fixed mode with 1 and 2 substeps: a ball rolled at v0 across a
 //! level floor stops after v0² / (2 k μ_r g) within 2 % (k = 5/7 for a solid ball, 2/3 for a
 //! disc in 2D); on a slope below μ_r (tan θ = 0.8 μ_r) it holds, moving less than the laws'
-//! elastic ranges (μ_r/c + tan θ/c) over 5 s once formed, and `StickSlipRolling` reads back
+//! elastic ranges (μ_r/c + tan θ/c) over 5 s once formed, and the modifier's rolling reports give
 //! the torque of statics, R m g sin θ, within 2 %; above μ_r (tan θ = 2 μ_r) it rolls down at
 //! k g (sin θ − μ_r cos θ) within 2 %; spun at 10 rad/s about the normal (3D, spinning
 //! resistance μ_spin) it stops after I ω0 / (μ_spin R m g) within 2 %; a resistance that breaks away at 0.05 and
@@ -17,7 +17,7 @@ mod common;
 
 use bevy::prelude::*;
 use common::bevy_rapier::prelude::*;
-use common::stickslip_bevy_rapier::{StickSlipFriction, StickSlipRolling};
+use common::stickslip_bevy_rapier::{StickSlipFriction, StickSlipRapier};
 use common::stickslip_rapier::FrictionMaterial;
 use common::*;
 use stickslip_core::law::Law;
@@ -91,6 +91,20 @@ fn roll(app: &mut App, ball: Entity, v: f32) {
     }
 }
 
+/// The resisting pairs after the last step: the modifier's reports, from the default
+/// context's joints.
+fn rolling_reports(app: &mut App) -> Vec<common::stickslip_rapier::RollingReport> {
+    let mut q = app
+        .world_mut()
+        .query::<&bevy_rapier::plugin::context::RapierContextJoints>();
+    let world = app.world();
+    let joints = q.single(world).expect("one rapier context");
+    world
+        .resource::<StickSlipRapier>()
+        .modifier()
+        .rolling_reports(&joints.impulse_joints)
+}
+
 fn run_for(app: &mut App, secs: f64) {
     steps(app, (secs / DT).round() as usize);
 }
@@ -134,7 +148,7 @@ fn a_ball_below_its_rolling_resistance_holds_on_a_slope() {
             run_for(&mut app, 5.0);
             let moved = (x_v(&app, ball).0 - x0).abs();
             let range = mu_r / C + tan / C;
-            let reports = &app.world().resource::<StickSlipRolling>().0;
+            let reports = rolling_reports(&mut app);
             assert_eq!(reports.len(), 1, "one resisting pair");
             let torque = Vec3::from(reports[0].rolling_torque).length() as f64;
             // The ball's mass at density 1000: a solid ball, a disc in 2D.
@@ -227,11 +241,11 @@ fn a_despawned_rolling_ball_leaves_no_joint() {
         1,
         "the rolling ball resists through one joint"
     );
-    assert_eq!(app.world().resource::<StickSlipRolling>().0.len(), 1);
+    assert_eq!(rolling_reports(&mut app).len(), 1);
     app.world_mut().despawn(ball);
     run_for(&mut app, 0.5);
     assert_eq!(joints(&mut app), 0);
-    assert!(app.world().resource::<StickSlipRolling>().0.is_empty());
+    assert!(rolling_reports(&mut app).is_empty());
 }
 
 /// Above its rolling resistance (tan θ = 2 μ_r) a ball rolls down at k g (sin θ − μ_r cos θ)
