@@ -6,9 +6,11 @@
 //! loaded below break-away move no more than under plain rapier in the same scene (and
 //! within 10 g_ba) while their neighbours slide, nothing
 //! becomes NaN or blows up, and a contact that re-forms after its box was lifted starts
-//! from a fresh sticking state instead of reusing the old sliding one. Pairs that rapier
-//! holds a manifold for without any solver contact (neighbours inside the prediction
-//! distance, not touching) keep no state at all.
+//! from a fresh sticking state instead of reusing the old sliding one. Manifolds that rapier
+//! holds without any solver contact (neighbours inside the prediction distance, not
+//! touching; a heightfield cell a rolling ball has left) keep no state at all: with the
+//! per-contact read-back on (a sweep every step) the states are exactly the touching
+//! manifolds.
 #![cfg(not(dim2))] // no 2D form yet: stickslip-fixtures2d compiles it empty
 
 use stickslip_core::law::{Law, Regime};
@@ -133,8 +135,8 @@ fn churn(with_stickslip: bool) -> Vec<f64> {
         modifier.step(&mut world);
         if with_stickslip {
             // Every active contact has a state (no loss), and every state belongs to a
-            // manifold rapier still holds (no leak; a separated manifold keeps its state until
-            // it goes).
+            // manifold rapier still holds (no leak; the state of a contact that let go stays
+            // until the next sweep, at most `SWEEP_INTERVAL` steps).
             let (held, active) = manifolds(&world, ground);
             let states = modifier.active_contacts();
             assert!(
@@ -268,4 +270,50 @@ fn near_misses_keep_no_state() {
         touching,
         "states only for touching contacts"
     );
+}
+
+#[test]
+fn contacts_that_let_go_keep_no_state() {
+    // Balls rolling across a heightfield of waves: each cell's manifold touches while a ball
+    // passes and then lets go, and rapier keeps it (without solver contacts) while the ball
+    // stays within the cell's margin. Only touching manifolds keep a state, at every step.
+    let n = 21;
+    let mut heights = Vec::with_capacity(n * n);
+    for i in 0..n {
+        for j in 0..n {
+            let (x, z) = (i as f32 / 2.0, j as f32 / 2.0);
+            heights.push(x.sin() * z.cos() * 0.1);
+        }
+    }
+    let mut world = PhysicsWorld::default();
+    let ground = world.insert_collider(
+        ColliderBuilder::heightfield(Array2::new(n, n, heights), Vector::new(20.0, 1.0, 20.0)),
+        None,
+    );
+    let law = Law::elasto_plastic(C, MU_BA, MU_MAX, Curve::constant(MU_MAX).unwrap()).unwrap();
+    let mut modifier = StickSlip::new(FrictionMaterial::new(law))
+        .with_read_back(stickslip_rapier::ReadBack::Contacts);
+    modifier.attach(&mut world.colliders, ground, None);
+    for i in 0..6 {
+        let (_, c) = world.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(Vector::new(-8.0, 0.6, -5.0 + 2.0 * i as f32))
+                .linvel(Vector::new(4.0, 0.0, 0.0))
+                .can_sleep(false),
+            ColliderBuilder::ball(0.25).density(1000.0),
+        );
+        modifier.attach(&mut world.colliders, c, None);
+    }
+    let mut let_go = 0;
+    for step in 0..180 {
+        modifier.step(&mut world);
+        let (held, active) = manifolds(&world, ground);
+        let_go = let_go.max(held - active);
+        assert_eq!(
+            modifier.active_contacts(),
+            active,
+            "step {step}: {held} manifolds held, {active} touching"
+        );
+    }
+    assert!(let_go > 0, "no manifold let go while rapier held it");
 }

@@ -148,18 +148,25 @@ impl<H> StickSlip<H> {
             return;
         };
         let manifold = rigid.manifold;
-        // A manifold without solver contacts and without a record (a pair inside the
-        // prediction distance, not touching) has nothing for the law: no record is made
-        // unless the wrapped hook keeps a value in its user_data.
-        if rigid.solver_contacts.is_empty() && *rigid.user_data == 0 {
-            inner.modify_solver_contacts(ctx);
+        // A manifold without solver contacts (a pair inside the prediction distance, not
+        // touching, or a contact that let go) has nothing for the law: it keeps no record
+        // (one it had is swept; the kernel relaxes an unloaded contact's spring anyway), so
+        // stickslip keeps state for touching contacts only, unless the wrapped hook keeps a
+        // value in its user_data.
+        if rigid.solver_contacts.is_empty() {
             let key = key(ctx, manifold, self.clock.clustering);
+            let ours = *rigid.user_data;
+            let inner_before = self.store.inner_user_data(ours, &key);
+            if let Some(r) = ctx.rigid_mut() {
+                *r.user_data = inner_before;
+            }
+            inner.modify_solver_contacts(ctx);
             let Some(r) = ctx.rigid_mut() else { return };
             let inner_data = *r.user_data;
             if inner_data == 0 {
                 return;
             }
-            let mut user_data = 0;
+            let mut user_data = ours;
             self.store
                 .with_record(&mut user_data, &key, self.clock.mark(), |rec, _, ours| {
                     rec.inner_user_data = inner_data;
