@@ -26,9 +26,10 @@
 //! extrapolate an accelerating slip) is kept as a bfloat16 (8 significant bits), the colliders
 //! by arena index, and liveness, sweep parity, regime and generation share one 16-bit word. The hook works on the unpacked [`ContactRecord`].
 
+use crate::fast_hash::HashMap;
 use rapier::prelude::{ColliderHandle, Vector};
 use std::cmp::Reverse;
-use std::collections::{BinaryHeap, HashMap};
+use std::collections::BinaryHeap;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Mutex, RwLock};
 use stickslip_core::contact::{ContactState, REGIME_RESET};
@@ -710,7 +711,7 @@ impl ContactStore {
         }
         let mut slots = Vec::with_capacity(n);
         let mut free = BinaryHeap::new();
-        let mut inner = HashMap::new();
+        let mut inner = HashMap::default();
         for (i, s) in image.slots.iter().enumerate() {
             let mut slot = Slot::dead(s.generation);
             match &s.live {
@@ -731,7 +732,7 @@ impl ContactStore {
             }
             slots.push(slot);
         }
-        let mut by_key = HashMap::with_capacity(image.keys.len());
+        let mut by_key = HashMap::with_capacity_and_hasher(image.keys.len(), Default::default());
         for (key, index) in &image.keys {
             let slot = slots
                 .get_mut(*index as usize)

@@ -50,6 +50,7 @@
 
 mod collider_map;
 mod contact_store;
+mod fast_hash;
 mod hook;
 mod measure;
 mod modifier;

@@ -2,6 +2,7 @@
 
 use crate::collider_map::{ColliderBits, ColliderMap};
 use crate::contact_store::ContactStore;
+use crate::fast_hash::HashMap;
 use crate::measure::{Measured, measure};
 use crate::pair_law::PairLaws;
 use crate::quiet::Recycling;
@@ -9,7 +10,6 @@ use crate::report::{ContactReport, WorldTotals};
 use crate::warnings::{Warned, Warning};
 use rapier::prelude::*;
 use serde::{Deserialize, Serialize};
-use std::collections::HashMap;
 use std::sync::atomic::{AtomicBool, Ordering};
 use stickslip_core::FrictionMaterial;
 use stickslip_core::ParamError;
@@ -216,7 +216,7 @@ impl<H> StickSlip<H> {
             reports: Vec::new(),
             totals: WorldTotals::default(),
             patches_seen: Default::default(),
-            patches_measured: HashMap::new(),
+            patches_measured: HashMap::default(),
             recycling: Recycling::default(),
             rolling: Default::default(),
         }

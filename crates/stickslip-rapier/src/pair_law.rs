@@ -16,9 +16,9 @@
 //! the combined break-away coefficient, clamped into range, with a one-time warning.
 
 use crate::collider_map::{ColliderBits, ColliderMap};
+use crate::fast_hash::HashMap;
 use crate::warnings::{Warned, Warning};
 use rapier::prelude::*;
-use std::collections::HashMap;
 use stickslip_core::FrictionMaterial;
 use stickslip_core::law::{CombineRule, Coulomb, Law};
 

@@ -97,6 +97,7 @@
 use crate::collider_map::{ColliderBits, ColliderMap};
 use crate::contact_store::is_composite;
 use crate::contact_store::{ContactRecord, ContactStore};
+use crate::fast_hash::HashMap;
 use crate::hook::inv_mass;
 use crate::measure::{Measured, measure, point_velocity, world_centroid};
 use crate::modifier::StickSlip;
@@ -104,7 +105,6 @@ use crate::pair_law::PairLaws;
 use crate::quiet::{DRIFT_SHARE, MOTION_SHARE, QuietPose};
 use crate::warnings::Warned;
 use rapier::prelude::*;
-use std::collections::HashMap;
 use stickslip_core::contact::{ContactInput, MAX_SANE_SPEED, slip_matters, step_contact};
 use stickslip_core::law::Regime;
 

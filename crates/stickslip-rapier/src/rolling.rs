@@ -52,13 +52,13 @@
 //! collider 1's body frame: when that body turns, its axes turn by |ω₁| dt within the step). **Snapshots** keep the pairs' states and joint handles: a
 //! restored world takes its joints over (see `adopt`).
 
+use crate::fast_hash::HashMap;
 use crate::measure::{measure, world_centroid};
 use crate::report::{DIM, RollingReport};
 #[cfg(not(dim2))]
 use rapier::math::Mat3;
 use rapier::prelude::*;
 use std::borrow::Cow;
-use std::collections::HashMap;
 use stickslip_core::contact::ContactState;
 use stickslip_core::law::{FrictionLaw, Law};
 use stickslip_core::rolling::{AxisStep, Freedom, freedom, reduced_arm, step_axis};
