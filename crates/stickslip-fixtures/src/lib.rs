@@ -25,3 +25,14 @@ pub use example1::example1;
 pub use plate::{PlateMeasurement, VibratingPlate};
 pub use reference::*;
 pub use sled::Sled;
+
+/// The contact manifolds of `world` with solver contacts (touching, not only near): the
+/// contacts stickslip keeps a friction state for.
+pub fn touching_manifolds(world: &stickslip_rapier::rapier::prelude::PhysicsWorld) -> usize {
+    world
+        .narrow_phase
+        .contact_pairs()
+        .flat_map(|p| p.solver_manifolds())
+        .filter(|m| !m.data.solver_contacts.is_empty())
+        .count()
+}

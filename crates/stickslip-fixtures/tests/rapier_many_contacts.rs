@@ -303,14 +303,7 @@ fn contacts_that_let_go_keep_no_state() {
             .any(|m| !m.data.solver_contacts.is_empty());
         Some(touching)
     };
-    let touching = |world: &PhysicsWorld| {
-        world
-            .narrow_phase
-            .contact_pairs()
-            .flat_map(|p| p.solver_manifolds())
-            .filter(|m| !m.data.solver_contacts.is_empty())
-            .count()
-    };
+    let touching = stickslip_fixtures::touching_manifolds;
     for _ in 0..20 {
         modifier.step(&mut world);
     }

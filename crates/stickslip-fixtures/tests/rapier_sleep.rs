@@ -10,22 +10,13 @@
 
 use stickslip_core::law::Law;
 use stickslip_core::sliding_curve::Curve;
-use stickslip_fixtures::{cuboid3, v3};
+use stickslip_fixtures::{cuboid3, touching_manifolds as touching, v3};
 use stickslip_rapier::rapier::prelude::*;
 use stickslip_rapier::{FrictionMaterial, SWEEP_INTERVAL, StickSlip};
 
 const MU_BA: f64 = 0.5;
 const MU_MAX: f64 = 0.55;
 const C: f64 = 1e4;
-
-fn touching(world: &PhysicsWorld) -> usize {
-    world
-        .narrow_phase
-        .contact_pairs()
-        .flat_map(|p| p.solver_manifolds())
-        .filter(|m| !m.data.solver_contacts.is_empty())
-        .count()
-}
 
 #[test]
 fn sleeping_contacts_keep_their_state_and_vanished_ones_lose_it() {
