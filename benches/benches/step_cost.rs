@@ -440,7 +440,16 @@ fn probe(spec: &str, mode: Mode) {
     let recycled = b.recycled().map_or(String::new(), |(q, n)| {
         format!(", {q} of {n} colliders recycled")
     });
-    println!("{scene_name} {variant_name}: {ns:.0} ns/step over {steps} steps{recycled}");
+    let (manifolds, _, _) = b.contacts();
+    let records = b.modifier().map_or(String::new(), |m| {
+        format!(
+            ", {} records in {} slots ({} B by the store's count) for {manifolds} active manifolds",
+            m.active_contacts(),
+            m.state_capacity(),
+            m.state_heap_bytes()
+        )
+    });
+    println!("{scene_name} {variant_name}: {ns:.0} ns/step over {steps} steps{recycled}{records}");
 }
 
 fn main() {

@@ -33,13 +33,7 @@ impl<T> ColliderMap<T> {
         }
         let i = i as usize;
         if self.slots.len() <= i {
-            // Grown by 1/32, not doubled: a map over every collider of a pile would otherwise
-            // keep up to twice the slots it uses (40 B each for the quiet poses; the bench's
-            // 10 000-point pile: 111 -> 86 B of heap per contact over plain rapier).
-            if self.slots.capacity() <= i {
-                self.slots
-                    .reserve_exact(i + 1 + (i + 1) / 32 - self.slots.len());
-            }
+            reserve_slack(&mut self.slots, i);
             self.slots.resize_with(i + 1, || None);
         }
         let old = self.slots[i].replace((generation, value));
@@ -83,6 +77,14 @@ impl<T> ColliderMap<T> {
     }
 }
 
+/// Makes room for index `i` of a dense per-collider vector with 1/32 to spare, not double:
+/// such vectors cover every collider of a world.
+pub(crate) fn reserve_slack<T>(v: &mut Vec<T>, i: usize) {
+    if v.capacity() <= i {
+        v.reserve_exact(i + 1 + (i + 1) / 32 - v.len());
+    }
+}
+
 /// A set of colliders as one bit per arena index (the pile of 10 000 attached boxes costs
 /// 1.25 kB, not 80). Generations are not kept: callers give the live handle, and a collider is
 /// detached before it is removed (or its bits apply to the next collider reusing its index).
@@ -103,6 +105,7 @@ impl ColliderBits {
         let (w, b) = (i / 64, i % 64);
         if on {
             if self.words.len() <= w {
+                reserve_slack(&mut self.words, w);
                 self.words.resize(w + 1, 0);
             }
             self.words[w] |= 1 << b;
@@ -152,6 +155,7 @@ impl AtomicColliderBits {
         if let Some(i) = ColliderBits::index(handle)
             && self.words.len() <= i / 64
         {
+            reserve_slack(&mut self.words, i / 64);
             self.words.resize_with(i / 64 + 1, Default::default);
         }
     }

@@ -1,4 +1,5 @@
-//! Per-contact friction state that lives as long as its contact manifold: 40 bytes a contact.
+//! Per-contact friction state that lives as long as its contact manifold: 35 bytes a contact
+//! (39 in rapier 0.35 builds).
 //!
 //! Lookup is cheap: a manifold's `user_data` holds its slot index (+1) and an 8-bit
 //! generation, so the hook reaches its record with one uncontended read lock and one
@@ -22,15 +23,18 @@
 //! end, so the store shrinks back after churn; a recycled slot gets a new generation so stale
 //! `user_data` never reaches another contact's state.
 //!
-//! The stored form ([`Slot`]) packs the record: the slip speed of the last step (used only to
-//! extrapolate an accelerating slip) is kept as a bfloat16 (8 significant bits), the colliders
-//! by arena index, and liveness, sweep parity, regime and generation share one 16-bit word. The hook works on the unpacked [`ContactRecord`].
+//! The stored form ([`Slot`]) packs the record, byte-aligned: the slip speed of the last step
+//! (used only to extrapolate an accelerating slip) is kept as a bfloat16 (8 significant bits),
+//! the colliders by arena index on 24 bits each (a pair with a collider beyond 2^24 gets a
+//! fresh record every step: see [`ContactStore::with_record`]), and liveness, sweep parity,
+//! regime and generation share one 16-bit word. The hook works on the unpacked
+//! [`ContactRecord`].
 
 use crate::fast_hash::HashMap;
 use rapier::prelude::{ColliderHandle, Vector};
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
 use std::sync::{Mutex, RwLock};
 use stickslip_core::contact::{ContactState, REGIME_RESET};
 
@@ -145,30 +149,56 @@ fn parity(step: u32) -> u16 {
     if step & 1 == 1 { TOUCHED } else { 0 }
 }
 
-/// The stored record: 32 bytes of f32/u32 fields.
+/// Largest collider arena index (exclusive) a record can keep: 24 bits.
+const PAIR_LIMIT: u32 = 1 << 24;
+
+/// The arena indices of a pair, 24 bits each (`None` beyond [`PAIR_LIMIT`]).
+fn pair_bytes(c1: u32, c2: u32) -> Option<[u8; 6]> {
+    if c1 >= PAIR_LIMIT || c2 >= PAIR_LIMIT {
+        return None;
+    }
+    let (a, b) = (c1.to_le_bytes(), c2.to_le_bytes());
+    Some([a[0], a[1], a[2], b[0], b[1], b[2]])
+}
+
+/// The stored record: 30 bytes, packed (no padding: a slot is an array of them).
 #[derive(Debug, Clone, Copy, Default)]
+#[repr(C, packed)]
 struct Packed {
     force: [f32; 3],
     slide: f32,
     limit: f32,
     mean_normal_force: f32,
-    /// Arena indices of the pair's colliders (a check that `user_data` is this pair's).
-    c1: u32,
-    c2: u32,
+    /// Arena indices of the pair's colliders, 24 bits each (a check that `user_data` is this
+    /// pair's, and the pair the sweep asks rapier about).
+    pair: [u8; 6],
     /// See `ContactRecord::warm_start_impulse`.
     #[cfg(rapier_035)]
     warm_start_impulse: f32,
 }
 
-/// What a slot holds: 36 bytes.
+impl Packed {
+    fn c1(&self) -> u32 {
+        let p = self.pair;
+        u32::from_le_bytes([p[0], p[1], p[2], 0])
+    }
+
+    fn c2(&self) -> u32 {
+        let p = self.pair;
+        u32::from_le_bytes([p[3], p[4], p[5], 0])
+    }
+}
+
+/// What a slot holds: 34 bytes, packed.
 #[derive(Debug, Clone, Copy, Default)]
+#[repr(C, packed)]
 struct SlotData {
     packed: Packed,
     slip_speed: u16,
     meta: u16,
 }
 
-/// One slot: its data behind a one-byte mutex, 40 bytes. The lock is held only to copy the
+/// One slot: its data behind a one-byte mutex, 35 bytes. The lock is held only to copy the
 /// record in or out (see the module docs), never while other code runs.
 #[derive(Debug, Default)]
 pub(crate) struct Slot(parking_lot::Mutex<SlotData>);
@@ -185,8 +215,12 @@ impl Slot {
         self.0.get_mut()
     }
 
-    fn meta_mut(&mut self) -> &mut u16 {
-        &mut self.0.get_mut().meta
+    fn meta(&mut self) -> u16 {
+        self.0.get_mut().meta
+    }
+
+    fn set_meta(&mut self, meta: u16) {
+        self.0.get_mut().meta = meta;
     }
 
     fn record(&mut self) -> ContactRecord {
@@ -213,7 +247,7 @@ fn unpack(p: &Packed, slip: u16, meta: u16) -> ContactRecord {
     }
 }
 
-fn pack(record: &ContactRecord, c1: u32, c2: u32) -> (Packed, u16) {
+fn pack(record: &ContactRecord, pair: [u8; 6]) -> (Packed, u16) {
     let r = &record.state;
     (
         Packed {
@@ -221,8 +255,7 @@ fn pack(record: &ContactRecord, c1: u32, c2: u32) -> (Packed, u16) {
             slide: r.slide,
             limit: r.limit,
             mean_normal_force: r.mean_normal_force,
-            c1,
-            c2,
+            pair,
             #[cfg(rapier_035)]
             warm_start_impulse: record.warm_start_impulse,
         },
@@ -241,8 +274,8 @@ fn with_state(meta: u16, record: &ContactRecord) -> u16 {
 fn fits(d: &SlotData, c1: u32, c2: u32, generation: Option<u8>) -> bool {
     d.meta & LIVE != 0
         && generation.is_none_or(|g| g == generation_of(d.meta))
-        && d.packed.c1 == c1
-        && d.packed.c2 == c2
+        && d.packed.c1() == c1
+        && d.packed.c2() == c2
 }
 
 fn index_of(h: ColliderHandle) -> u32 {
@@ -263,7 +296,17 @@ pub(crate) struct ContactStore {
     /// Generation given to the next slot pushed, so that a slot cut off the end and pushed
     /// again does not restart at the generation stale `user_data` may still carry.
     next_generation: std::sync::atomic::AtomicU8,
+    /// Records created since the last sweep (see [`ContactStore::churned`]).
+    created: AtomicU32,
 }
+
+/// A store sweeps before its next regular sweep once it has created this share of its
+/// slots since the last one (see [`ContactStore::churned`]).
+const CHURN_SHARE: usize = 16;
+
+/// Fewest records created since the last sweep that count as churn (a small world sweeps
+/// on its regular interval).
+const CHURN_MIN: usize = 8;
 
 pub(crate) const INDEX_BITS: u32 = 24;
 const INDEX_MASK: u32 = (1 << INDEX_BITS) - 1;
@@ -305,6 +348,8 @@ pub(crate) struct StoreImage {
     pub slots: Vec<SlotImage>,
     pub keys: Vec<(ContactKey, u32)>,
     pub next_generation: u8,
+    /// Records created since the last sweep.
+    pub created: u32,
 }
 
 impl ContactStore {
@@ -326,7 +371,12 @@ impl ContactStore {
         }
         // New contact: allocate under the write lock (rare: only when contacts appear), then
         // step it under the read lock like any other.
-        let (index, new) = self.create(user_data, key);
+        let Some((index, new)) = self.create(user_data, key) else {
+            // A collider beyond the 24 bits a record keeps (16.7 million colliders): the
+            // contact is stepped from a fresh state every step (no memory of its own).
+            *user_data = 0;
+            return f(&mut ContactRecord::default(), true, 0);
+        };
         let slots = self.slots.read().unwrap_or_else(|e| e.into_inner());
         match slots.get(index as usize) {
             Some(slot) => self.run(index, &mut slot.0.lock(), new, step, *user_data, f),
@@ -378,8 +428,7 @@ impl ContactStore {
         }
         let before = rec.inner_user_data;
         let out = f(&mut rec, new, ours);
-        let (c1, c2) = (d.packed.c1, d.packed.c2);
-        (d.packed, d.slip_speed) = pack(&rec, c1, c2);
+        (d.packed, d.slip_speed) = pack(&rec, d.packed.pair);
         d.meta = (with_state(d.meta, &rec) & !TOUCHED) | parity(step);
         if rec.inner_user_data != before {
             let mut map = lock(&self.inner_data);
@@ -430,8 +479,9 @@ impl ContactStore {
     /// The slot for a new manifold with `key` (and whether it is new: another thread may have
     /// made it since the caller looked, which the key map, read again under the write lock,
     /// tells); points `user_data` at it.
-    fn create(&self, user_data: &mut u32, key: &ContactKey) -> (u32, bool) {
+    fn create(&self, user_data: &mut u32, key: &ContactKey) -> Option<(u32, bool)> {
         let (c1, c2) = (index_of(key.c1), index_of(key.c2));
+        let pair = pair_bytes(c1, c2)?;
         let mut slots = self.slots.write().unwrap_or_else(|e| e.into_inner());
         let known = lock(&self.by_key).get(key).copied();
         if let Some(index) = known
@@ -439,7 +489,7 @@ impl ContactStore {
             && fits(slot.data(), c1, c2, None)
         {
             *user_data = encode(index, generation_of(slot.data().meta));
-            return (index, false);
+            return Some((index, false));
         }
         let index = match lock(&self.free).pop() {
             Some(Reverse(i)) => i,
@@ -459,8 +509,7 @@ impl ContactStore {
         let generation = generation_of(d.meta).wrapping_add(1);
         *d = SlotData {
             packed: Packed {
-                c1,
-                c2,
+                pair,
                 ..Packed::default()
             },
             slip_speed: 0,
@@ -468,8 +517,9 @@ impl ContactStore {
         };
         lock(&self.by_key).insert(*key, index);
         lock(&self.inner_data).remove(&index);
+        self.created.fetch_add(1, Ordering::Relaxed);
         *user_data = encode(index, generation);
-        (index, true)
+        Some((index, true))
     }
 
     /// Marks no record as holding the hook's next step (see `ContactRecord::ahead`): a mark
@@ -477,8 +527,20 @@ impl ContactStore {
     pub fn clear_ahead(&mut self) {
         let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
         for slot in slots.iter_mut() {
-            *slot.meta_mut() &= !AHEAD;
+            let meta = slot.meta();
+            slot.set_meta(meta & !AHEAD);
         }
+    }
+
+    /// Whether the store created many records since its last sweep (at least 1/[`CHURN_SHARE`]
+    /// of its slots): contacts come and go (rapier re-forms the patches of bodies moving over
+    /// a composite shape every step), and the records of those that went are to be dropped
+    /// now rather than at the next regular sweep, so that the records kept stay close to the
+    /// live contacts.
+    pub fn churned(&self) -> bool {
+        let created = self.created.load(Ordering::Relaxed) as usize;
+        let slots = self.slots.read().unwrap_or_else(|e| e.into_inner()).len();
+        created >= CHURN_MIN.max(slots / CHURN_SHARE)
     }
 
     /// Drops every record not touched at `step`, cuts free slots off the end and gives back
@@ -493,19 +555,20 @@ impl ContactStore {
     /// pass over the slots; the narrow phase is asked only about untouched records (sleeping
     /// or vanished contacts).
     pub fn sweep_untouched(&mut self, step: u32, mut held: impl FnMut(u32, u32, u32) -> bool) {
+        *self.created.get_mut() = 0;
         let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
         let free = self.free.get_mut().unwrap_or_else(|e| e.into_inner());
         let mut dropped = false;
         for (i, slot) in slots.iter_mut().enumerate() {
-            let meta = *slot.meta_mut();
+            let meta = slot.meta();
             if meta & LIVE == 0 || meta & TOUCHED == parity(step) {
                 continue;
             }
             let p = slot.data().packed;
-            if held(p.c1, p.c2, encode(i as u32, generation_of(meta))) {
-                *slot.meta_mut() = (meta & !TOUCHED) | parity(step);
+            if held(p.c1(), p.c2(), encode(i as u32, generation_of(meta))) {
+                slot.set_meta((meta & !TOUCHED) | parity(step));
             } else {
-                *slot.meta_mut() &= !(LIVE | KEYED);
+                slot.set_meta(meta & !(LIVE | KEYED));
                 free.push(Reverse(i as u32));
                 dropped = true;
             }
@@ -525,13 +588,14 @@ impl ContactStore {
         let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
         let free = self.free.get_mut().unwrap_or_else(|e| e.into_inner());
         for (i, slot) in slots.iter_mut().enumerate() {
-            if *slot.meta_mut() & LIVE != 0 && also_dead(slot) {
-                *slot.meta_mut() &= !(LIVE | KEYED);
+            if slot.meta() & LIVE != 0 && also_dead(slot) {
+                let meta = slot.meta();
+                slot.set_meta(meta & !(LIVE | KEYED));
                 free.push(Reverse(i as u32));
             }
         }
         let mut n = slots.len();
-        while n > 0 && *slots[n - 1].meta_mut() & LIVE == 0 {
+        while n > 0 && slots[n - 1].meta() & LIVE == 0 {
             n -= 1;
         }
         if n < slots.len() {
@@ -577,7 +641,7 @@ impl ContactStore {
         let c = index_of(collider);
         self.release(|slot| {
             let p = slot.data().packed;
-            p.c1 == c || p.c2 == c
+            p.c1() == c || p.c2() == c
         });
     }
 
@@ -593,16 +657,16 @@ impl ContactStore {
         let (index, generation) = decode(user_data)?;
         let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
         let slot = slots.get_mut(index as usize)?;
-        let meta = *slot.meta_mut();
+        let meta = slot.meta();
         let p = slot.data().packed;
         let ok = meta & LIVE != 0
             && generation_of(meta) == generation
-            && p.c1 == index_of(c1)
-            && p.c2 == index_of(c2);
+            && p.c1() == index_of(c1)
+            && p.c2() == index_of(c2);
         if !ok {
             return None;
         }
-        *slot.meta_mut() = (meta & !TOUCHED) | parity(step);
+        slot.set_meta((meta & !TOUCHED) | parity(step));
         Some(slot.record())
     }
 
@@ -625,7 +689,7 @@ impl ContactStore {
         }
         let mut rec = unpack(&d.packed, d.slip_speed, d.meta);
         let out = f(&mut rec);
-        (d.packed, d.slip_speed) = pack(&rec, d.packed.c1, d.packed.c2);
+        (d.packed, d.slip_speed) = pack(&rec, d.packed.pair);
         d.meta = (with_state(d.meta, &rec) & !TOUCHED) | parity(step);
         Some(out)
     }
@@ -674,8 +738,8 @@ impl ContactStore {
                     meta,
                 } = *s.0.lock();
                 let live = (meta & LIVE != 0).then(|| LiveImage {
-                    c1: p.c1,
-                    c2: p.c2,
+                    c1: p.c1(),
+                    c2: p.c2(),
                     touched_odd: meta & TOUCHED != 0,
                     record: ContactRecord {
                         inner_user_data: inner.get(&(i as u32)).copied().unwrap_or(0),
@@ -699,6 +763,7 @@ impl ContactStore {
             slots,
             keys,
             next_generation: self.next_generation.load(Ordering::Relaxed),
+            created: self.created.load(Ordering::Relaxed),
         }
     }
 
@@ -717,14 +782,16 @@ impl ContactStore {
             match &s.live {
                 None => free.push(Reverse(i as u32)),
                 Some(l) => {
-                    let (p, slip) = pack(&l.record, l.c1, l.c2);
+                    let pair = pair_bytes(l.c1, l.c2)
+                        .ok_or_else(|| format!("slot {i}: collider index beyond 24 bits"))?;
+                    let (p, slip) = pack(&l.record, pair);
                     slot.data().packed = p;
                     slot.data().slip_speed = slip;
-                    let mut meta = with_state(*slot.meta_mut(), &l.record) | LIVE;
+                    let mut meta = with_state(slot.meta(), &l.record) | LIVE;
                     if l.touched_odd {
                         meta |= TOUCHED;
                     }
-                    *slot.meta_mut() = meta;
+                    slot.set_meta(meta);
                     if l.record.inner_user_data != 0 {
                         inner.insert(i as u32, l.record.inner_user_data);
                     }
@@ -739,13 +806,14 @@ impl ContactStore {
                 .filter(|s| s.0.lock().meta & LIVE != 0)
                 .ok_or_else(|| format!("key map: slot {index} is not a live record"))?;
             let p = slot.data().packed;
-            if (p.c1, p.c2) != (index_of(key.c1), index_of(key.c2)) {
+            if (p.c1(), p.c2()) != (index_of(key.c1), index_of(key.c2)) {
                 return Err(format!("key map: slot {index} is not a record of its pair"));
             }
-            if *slot.meta_mut() & KEYED != 0 {
+            if slot.meta() & KEYED != 0 {
                 return Err(format!("key map: slot {index} listed twice"));
             }
-            *slot.meta_mut() |= KEYED;
+            let meta = slot.meta();
+            slot.set_meta(meta | KEYED);
             if by_key.insert(*key, *index).is_some() {
                 return Err("key map: a key is listed twice".into());
             }
@@ -757,6 +825,7 @@ impl ContactStore {
             inner_used: AtomicBool::new(!inner.is_empty()),
             inner_data: Mutex::new(inner),
             next_generation: std::sync::atomic::AtomicU8::new(image.next_generation),
+            created: AtomicU32::new(image.created),
         })
     }
 }
@@ -775,11 +844,36 @@ mod tests {
     }
 
     #[test]
-    fn a_slot_is_40_bytes() {
+    fn a_slot_is_35_bytes() {
         // rapier 0.35 builds keep one f32 more (see `ContactRecord::warm_start_impulse`).
         let extra = if cfg!(rapier_035) { 4 } else { 0 };
-        assert_eq!(std::mem::size_of::<SlotData>(), 36 + extra);
-        assert_eq!(std::mem::size_of::<Slot>(), 40 + extra);
+        assert_eq!(std::mem::size_of::<SlotData>(), 34 + extra);
+        assert_eq!(std::mem::size_of::<Slot>(), 35 + extra);
+    }
+
+    #[test]
+    fn a_collider_beyond_24_bits_gets_a_fresh_record_each_step() {
+        let store = ContactStore::default();
+        let far = key(3, PAIR_LIMIT);
+        for step in 1..4 {
+            let mut ud = 0;
+            let (new, slide) = store.with_record(&mut ud, &far, step, |r, new, _| {
+                let before = r.state.slide;
+                r.state.slide = 1.0;
+                (new, before)
+            });
+            assert_eq!((new, slide, ud), (true, 0.0, 0));
+        }
+        assert_eq!(store.len(), 0);
+        // The largest index that fits keeps its record.
+        let mut ud = 0;
+        store.with_record(&mut ud, &key(PAIR_LIMIT - 1, 0), 1, |r, _, _| {
+            r.state.slide = 1.0
+        });
+        let kept = store.with_record(&mut ud, &key(PAIR_LIMIT - 1, 0), 2, |r, new, _| {
+            (new, r.state.slide)
+        });
+        assert_eq!(kept, (false, 1.0));
     }
 
     #[test]
@@ -807,7 +901,7 @@ mod tests {
                     ahead,
                     ..rec
                 };
-                let (p, slip) = pack(&rec, 3, 4);
+                let (p, slip) = pack(&rec, pair_bytes(3, PAIR_LIMIT - 1).unwrap());
                 let meta = with_state(LIVE, &rec);
                 assert_eq!(unpack(&p, slip, meta), rec);
             }

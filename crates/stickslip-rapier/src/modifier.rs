@@ -125,7 +125,8 @@ pub struct NotReadBack {
 pub enum ReadBack {
     /// Nothing: [`StickSlip::totals`] and [`StickSlip::reports`] return [`NotReadBack`], and the
     /// end-of-step pass over the narrow phase (which also drops the state of vanished contacts
-    /// and keeps that of sleeping ones) runs only every [`SWEEP_INTERVAL`] steps. The
+    /// and keeps that of sleeping ones) runs only every [`SWEEP_INTERVAL`] steps (sooner
+    /// where contacts come and go: once the store has made records for 1/16 of its slots). The
     /// friction itself is the same in every mode; this is the cheapest (default).
     #[default]
     Off,
@@ -624,7 +625,7 @@ impl<H> StickSlip<H> {
     /// that stop being quiet (see the `recycle` module docs); sums the totals and builds the
     /// reports (as [`Self::read_back`] asks) and drops the state of contacts whose manifold
     /// rapier no longer holds (rapier never says when one disappears; with nothing read back,
-    /// every [`SWEEP_INTERVAL`] steps).
+    /// every [`SWEEP_INTERVAL`] steps, or sooner where contacts come and go).
     pub fn end_step(
         &mut self,
         narrow_phase: &NarrowPhase,
@@ -659,7 +660,7 @@ impl<H> StickSlip<H> {
         let read_back = self.read_back;
         let mark = self.clock.mark();
         if read_back == ReadBack::Off {
-            if self.clock.step.is_multiple_of(SWEEP_INTERVAL) {
+            if self.clock.step.is_multiple_of(SWEEP_INTERVAL) || self.store.churned() {
                 // Nothing to read back: only the records the hook did not see since the last
                 // sweep (sleeping or vanished contacts) are looked up in the narrow phase.
                 self.store.sweep_untouched(mark, |c1, c2, user_data| {

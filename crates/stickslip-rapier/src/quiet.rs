@@ -2,7 +2,7 @@
 //! why): the quiet colliders, where their bodies were when they went quiet, and the shares of
 //! the limit and of rapier's recycle window that decide it.
 
-use crate::collider_map::{AtomicColliderBits, ColliderBits, ColliderMap};
+use crate::collider_map::{AtomicColliderBits, ColliderBits};
 use rapier::prelude::*;
 
 /// Share of the recycle window a quiet body may drift (translation, plus the rotation's chord
@@ -18,7 +18,7 @@ pub(crate) struct Recycling {
     pub quiet: ColliderBits,
     /// Where each quiet collider's body (or the collider, without one) was when its flag
     /// went off, and the collider's reach from that pose's origin (m).
-    pub poses: ColliderMap<QuietPose>,
+    pub poses: QuietPoses,
     /// Colliders a hooked manifold found not quiet during the step (any thread).
     pub active: AtomicColliderBits,
     /// Colliders to hook again at the next `begin_step` (a material or source changed).
@@ -50,40 +50,219 @@ impl Recycling {
     }
 }
 
+/// Largest collider arena index (exclusive) [`QuietPoses`] keeps a pose for (the map is
+/// dense: an index from a forged handle must not size it). A collider beyond it is never
+/// quiet.
+const MAX_INDEX: u32 = 1 << 24;
+
+/// The quiet poses by collider arena index, 32 bytes a slot: the pose and the low 16 bits of
+/// the collider handle's generation (a slot is empty while its reach is 0). Like the quiet
+/// bits, the map expects a collider to be detached before it is removed; the generation's
+/// low bits keep a pose from reaching a collider that took its index without (unless the
+/// index was reused 65 536 times in between: that collider's drift is then measured from
+/// the pose, and it is hooked again when it moves).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct QuietPoses {
+    slots: Vec<QuietSlot>,
+}
+
+#[derive(Debug, Clone, Copy, Default)]
+#[repr(C, packed(2))]
+struct QuietSlot {
+    translation: [u32; 3],
+    rotation: [u32; 4],
+    /// bfloat16 bits of the reach; 0: empty.
+    reach: u16,
+    generation: u16,
+}
+
+impl QuietPoses {
+    pub fn insert(&mut self, handle: ColliderHandle, pose: QuietPose) {
+        let (i, generation) = handle.0.into_raw_parts();
+        if i >= MAX_INDEX {
+            return;
+        }
+        let i = i as usize;
+        if self.slots.len() <= i {
+            crate::collider_map::reserve_slack(&mut self.slots, i);
+            self.slots.resize(i + 1, QuietSlot::default());
+        }
+        self.slots[i] = QuietSlot {
+            translation: pose.translation,
+            rotation: pose.rotation,
+            reach: pose.reach.get(),
+            generation: generation as u16,
+        };
+    }
+
+    pub fn remove(&mut self, handle: ColliderHandle) {
+        if self.get(handle).is_some() {
+            let i = handle.0.into_raw_parts().0 as usize;
+            self.slots[i].reach = 0;
+        }
+    }
+
+    pub fn get(&self, handle: ColliderHandle) -> Option<QuietPose> {
+        let (i, generation) = handle.0.into_raw_parts();
+        let slot = *self.slots.get(i as usize)?;
+        let same = { slot.generation } == generation as u16;
+        same.then(|| {
+            Some(QuietPose {
+                translation: slot.translation,
+                rotation: slot.rotation,
+                reach: std::num::NonZeroU16::new(slot.reach)?,
+            })
+        })
+        .flatten()
+    }
+
+    /// The poses kept: arena index, low 16 bits of the generation, pose; by increasing index.
+    pub fn iter(&self) -> impl Iterator<Item = (u32, u16, QuietPose)> + '_ {
+        self.slots.iter().enumerate().filter_map(|(i, s)| {
+            let s = *s;
+            let pose = QuietPose {
+                translation: s.translation,
+                rotation: s.rotation,
+                reach: std::num::NonZeroU16::new(s.reach)?,
+            };
+            Some((i as u32, s.generation, pose))
+        })
+    }
+}
+
 /// Where a quiet collider's body (or the collider, without one) was when its flag went off,
-/// and the collider's reach from that pose's origin (m): 32 bytes as plain floats, where a
-/// `Pose` with its SIMD alignment made the map's slot 80.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// and the collider's reach from that pose's origin (m), in 30 bytes: a quiet pose is kept
+/// for every collider of a resting pile, beside each contact's 35-byte record (with a
+/// SIMD-aligned `Pose` the map's slot was 80 bytes).
+///
+/// The pose is kept exactly (f32 bits: a ground's reach is tens of metres, where a rotation
+/// packed to 1e-4 rad would move its rim by millimetres, beyond the drift allowed). The reach
+/// is rounded up to 8 significant bits (bfloat16), so the drift it measures is never less than
+/// the exact reach's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) struct QuietPose {
-    /// x y z (z = 0 in 2D).
-    pub translation: [f32; 3],
-    /// Unit quaternion, x y z w (in 2D: the unit complex, re im, then 0 0).
-    pub rotation: [f32; 4],
-    pub reach: f32,
+    /// x y z (z = 0 in 2D), f32 bits.
+    translation: [u32; 3],
+    /// Unit quaternion x y z w (in 2D: the unit complex, re im, then 0 0), f32 bits.
+    rotation: [u32; 4],
+    /// bfloat16 bits of the reach (m), never 0 (0 marks an empty slot of [`QuietPoses`]).
+    reach: std::num::NonZeroU16,
 }
 
 impl QuietPose {
     pub fn new(pose: &Pose, reach: f32) -> Self {
+        let [x, y, z] = crate::tangent::world(pose.translation);
         let q = pose.rotation;
         #[cfg(not(dim2))]
         let rotation = [q.x, q.y, q.z, q.w];
         #[cfg(dim2)]
         let rotation = [q.re, q.im, 0.0, 0.0];
         QuietPose {
-            translation: crate::tangent::world(pose.translation),
-            rotation,
-            reach,
+            translation: [x.to_bits(), y.to_bits(), z.to_bits()],
+            rotation: rotation.map(f32::to_bits),
+            reach: reach_up(reach),
         }
     }
 
+    /// The pose kept.
     pub fn pose(&self) -> Pose {
+        let [x, y, z] = self.translation.map(f32::from_bits);
+        let [a, b, c, d] = self.rotation.map(f32::from_bits);
         #[cfg(not(dim2))]
-        let rotation = {
-            let [x, y, z, w] = self.rotation;
-            Rotation::from_xyzw(x, y, z, w)
-        };
+        let rotation = Rotation::from_xyzw(a, b, c, d);
         #[cfg(dim2)]
-        let rotation = Rotation::from_cos_sin_unchecked(self.rotation[0], self.rotation[1]);
-        Pose::from_parts(crate::tangent::vector(self.translation), rotation)
+        let rotation = {
+            let _ = (c, d);
+            Rotation::from_cos_sin_unchecked(a, b)
+        };
+        Pose::from_parts(crate::tangent::vector([x, y, z]), rotation)
+    }
+
+    /// The reach kept (m): the one given, rounded up to 8 significant bits.
+    pub fn reach(&self) -> f32 {
+        f32::from_bits((self.reach.get() as u32) << 16)
+    }
+
+    /// The stored form (for snapshots): translation, rotation, bfloat16 bits of the reach.
+    pub fn stored(&self) -> ([f32; 3], [f32; 4], u16) {
+        (
+            self.translation.map(f32::from_bits),
+            self.rotation.map(f32::from_bits),
+            self.reach.get(),
+        )
+    }
+
+    /// The pose of a stored form (from [`Self::stored`]); `None` for a reach of 0 bits.
+    pub fn from_stored(translation: [f32; 3], rotation: [f32; 4], reach: u16) -> Option<Self> {
+        Some(QuietPose {
+            translation: translation.map(f32::to_bits),
+            rotation: rotation.map(f32::to_bits),
+            reach: std::num::NonZeroU16::new(reach)?,
+        })
+    }
+}
+
+/// The bfloat16 bits of `reach` rounded up (never 0: the smallest positive value).
+fn reach_up(reach: f32) -> std::num::NonZeroU16 {
+    let bits = reach.max(0.0).to_bits();
+    let mut high = (bits >> 16) as u16;
+    if bits & 0xFFFF != 0 && reach.is_finite() {
+        high = high.saturating_add(1);
+    }
+    std::num::NonZeroU16::new(high).unwrap_or(std::num::NonZeroU16::MIN)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stored_poses_come_back_exactly() {
+        #[cfg(not(dim2))]
+        let r = Rotation::from_axis_angle(Vector::new(0.3, -0.4, 0.5).normalize(), 2.9);
+        #[cfg(dim2)]
+        let r = Rotation::new(2.9);
+        let pose = Pose::from_parts(crate::tangent::vector([1.25, -2.5, 1e4]), r);
+        let q = QuietPose::new(&pose, 0.7);
+        assert_eq!(q.pose(), pose);
+        let (t, r, reach) = q.stored();
+        assert_eq!(QuietPose::from_stored(t, r, reach), Some(q));
+        assert_eq!(QuietPose::from_stored(t, r, 0), None);
+    }
+
+    #[test]
+    fn reach_is_rounded_up() {
+        for reach in [0.0f32, 1e-30, 0.3, 0.7, 1.0, 2.5, 123.456, 1e20] {
+            let kept = QuietPose::new(&Pose::IDENTITY, reach).reach();
+            assert!(
+                kept >= reach && kept <= reach * (1.0 + 1.0 / 128.0) + 1e-38,
+                "{reach} {kept}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_slot_of_the_quiet_map_is_32_bytes() {
+        assert_eq!(std::mem::size_of::<QuietSlot>(), 32);
+    }
+
+    #[test]
+    fn the_quiet_map_tells_colliders_apart() {
+        let mut poses = QuietPoses::default();
+        let a = ColliderHandle::from_raw_parts(5, 1);
+        let pose = QuietPose::new(&Pose::IDENTITY, 0.5);
+        poses.insert(a, pose);
+        assert_eq!(poses.get(a), Some(pose));
+        // Another collider at the same index, one at another index, one beyond the map.
+        assert_eq!(poses.get(ColliderHandle::from_raw_parts(5, 2)), None);
+        assert_eq!(poses.get(ColliderHandle::from_raw_parts(6, 1)), None);
+        poses.insert(ColliderHandle::from_raw_parts(MAX_INDEX, 0), pose);
+        assert_eq!(poses.slots.len(), 6);
+        assert_eq!(poses.iter().collect::<Vec<_>>(), [(5, 1, pose)]);
+        poses.remove(ColliderHandle::from_raw_parts(5, 2));
+        assert_eq!(poses.get(a), Some(pose));
+        poses.remove(a);
+        assert_eq!(poses.get(a), None);
+        assert_eq!(poses.iter().count(), 0);
     }
 }

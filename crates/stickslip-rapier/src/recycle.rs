@@ -94,7 +94,7 @@
 //!
 //! With `contact_recycling` off, or a pause (dt = 0), every flag stays on.
 
-use crate::collider_map::{ColliderBits, ColliderMap};
+use crate::collider_map::ColliderBits;
 use crate::contact_store::is_composite;
 use crate::contact_store::{ContactRecord, ContactStore};
 use crate::fast_hash::HashMap;
@@ -102,7 +102,7 @@ use crate::hook::inv_mass;
 use crate::measure::{Measured, measure, point_velocity, world_centroid};
 use crate::modifier::StickSlip;
 use crate::pair_law::PairLaws;
-use crate::quiet::{DRIFT_SHARE, MOTION_SHARE, QuietPose};
+use crate::quiet::{DRIFT_SHARE, MOTION_SHARE, QuietPose, QuietPoses};
 use crate::warnings::Warned;
 use rapier::prelude::*;
 use stickslip_core::contact::{ContactInput, MAX_SANE_SPEED, slip_matters, step_contact};
@@ -137,14 +137,9 @@ fn pose_of(bodies: &RigidBodySet, collider: &Collider) -> Pose {
 /// The collider's reach: remembered with its pose while it is quiet (a changed shape or
 /// offset makes rapier run an unhooked full update, which hooks the collider again), found
 /// from its shape otherwise.
-fn reach_of(
-    poses: &ColliderMap<QuietPose>,
-    bodies: &RigidBodySet,
-    h: ColliderHandle,
-    c: &Collider,
-) -> f32 {
+fn reach_of(poses: &QuietPoses, bodies: &RigidBodySet, h: ColliderHandle, c: &Collider) -> f32 {
     match poses.get(h) {
-        Some(q) => q.reach,
+        Some(q) => q.reach(),
         None => anchor(bodies, c).1,
     }
 }
@@ -474,13 +469,14 @@ impl<H> StickSlip<H> {
             // A collider that rides (moves more than a step's share of the window, see
             // `settle_after_step`) is left to rapier: its pairs' full updates write the same.
             let moved = r.poses.get(h).is_none_or(|q| {
-                let motion = step_motion(bodies, c, q.reach, dt);
+                let reach = q.reach();
+                let motion = step_motion(bodies, c, reach, dt);
                 if motion > step_limit {
                     // Unless the user gave it a speed that is garbage (the kernel resets).
                     !(motion <= MAX_SANE_SPEED as f32 * dt)
                 } else {
                     let now = pose_of(bodies, c);
-                    !(drift(&q.pose(), &now, q.reach) + motion <= limit)
+                    !(drift(&q.pose(), &now, reach) + motion <= limit)
                 }
             });
             // A filter flag the user set between steps: rapier updates its pairs in full.
@@ -791,7 +787,7 @@ impl<H> StickSlip<H> {
                 // A collider that stays quiet keeps its reach (a changed shape makes rapier
                 // update its pairs unhooked, which hooks it again).
                 let (pose, reach) = match r.poses.get(h) {
-                    Some(q) => (pose_of(bodies, c), q.reach),
+                    Some(q) => (pose_of(bodies, c), q.reach()),
                     None => anchor(bodies, c),
                 };
                 r.poses.insert(h, QuietPose::new(&pose, reach));

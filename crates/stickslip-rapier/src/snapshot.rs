@@ -89,7 +89,7 @@ use stickslip_core::law::Regime;
 use stickslip_core::waveform::Waveform;
 
 /// Version of the snapshot format written by this build (and the only one it reads).
-pub const FORMAT_VERSION: u32 = 5;
+pub const FORMAT_VERSION: u32 = 6;
 
 const MAGIC: [u8; 8] = *b"STKSLIP\0";
 /// Header kind of a [`StickSlipSnapshot`] file.
@@ -508,6 +508,8 @@ struct ContactsSnapshot {
     slots: Vec<SlotSnapshot>,
     keys: Vec<KeySnapshot>,
     next_generation: u8,
+    /// Records created since the last sweep (the next sweep may come early: churn).
+    created: u32,
 }
 
 impl From<&ContactStore> for ContactsSnapshot {
@@ -533,6 +535,7 @@ impl From<&ContactStore> for ContactsSnapshot {
                 })
                 .collect(),
             next_generation: image.next_generation,
+            created: image.created,
         }
     }
 }
@@ -568,6 +571,7 @@ impl ContactsSnapshot {
                 })
                 .collect(),
             next_generation: self.next_generation,
+            created: self.created,
         };
         ContactStore::from_image(&image).map_err(|e| invalid("contact store", e))
     }
@@ -809,11 +813,14 @@ impl ResistingSnapshot {
 /// A quiet collider and the pose its drift is measured from.
 #[derive(Debug, Clone, Copy, Serialize, Deserialize)]
 struct QuietEntry {
+    /// The collider's arena index and the low 16 bits of its generation (what the modifier
+    /// keeps of it).
     collider: Handle,
     translation: [f32; 3],
     /// Unit quaternion, x y z w.
     rotation: [f32; 4],
-    reach: f32,
+    /// bfloat16 bits of the collider's reach (m).
+    reach: u16,
 }
 
 /// The last solve of a composite contact patch, by the `user_data` of its record.
@@ -964,12 +971,21 @@ impl<H> StickSlip<H> {
                 .recycling
                 .poses
                 .iter()
-                .filter(|(h, _)| self.recycling.quiet.contains(*h))
-                .map(|(h, q)| QuietEntry {
-                    collider: h.into(),
-                    translation: q.translation,
-                    rotation: q.rotation,
-                    reach: q.reach,
+                .filter(|&(i, g, _)| {
+                    let h = ColliderHandle::from_raw_parts(i, g as u32);
+                    self.recycling.quiet.contains(h)
+                })
+                .map(|(index, generation, q)| {
+                    let (translation, rotation, reach) = q.stored();
+                    QuietEntry {
+                        collider: Handle {
+                            index,
+                            generation: generation as u32,
+                        },
+                        translation,
+                        rotation,
+                        reach,
+                    }
                 })
                 .collect(),
             wake: self.recycling.wake.indices().collect(),
@@ -1103,27 +1119,32 @@ impl<H> StickSlip<H> {
                     "not in increasing collider order",
                 ));
             }
-            let finite = q
-                .translation
-                .iter()
-                .chain(&q.rotation)
-                .all(|v| v.is_finite())
-                && q.reach.is_finite();
-            if !finite {
+            let pose = crate::quiet::QuietPose::from_stored(q.translation, q.rotation, q.reach)
+                .filter(|p| {
+                    q.translation
+                        .iter()
+                        .chain(&q.rotation)
+                        .all(|v| v.is_finite())
+                        && p.reach().is_finite()
+                });
+            let Some(pose) = pose else {
                 return Err(invalid("quiet colliders", "a pose is not finite"));
+            };
+            if q.collider.generation > u16::MAX as u32 {
+                return Err(invalid("quiet colliders", "a generation beyond 16 bits"));
             }
-            let h = ColliderHandle::from(q.collider);
-            if colliders.contains(h) && m.flagged.contains(h) && m.attached.contains(h) {
+            // The live collider at the index, if its generation's low bits are the pose's.
+            let live = colliders
+                .get_unknown_gen(q.collider.index)
+                .map(|(_, h)| h)
+                .filter(|h| h.0.into_raw_parts().1 & 0xFFFF == q.collider.generation);
+            if let Some(h) = live
+                && m.flagged.contains(h)
+                && m.attached.contains(h)
+            {
                 m.recycling.quiet.set(h, true);
                 m.recycling.active.cover(h);
-                m.recycling.poses.insert(
-                    h,
-                    crate::quiet::QuietPose {
-                        translation: q.translation,
-                        rotation: q.rotation,
-                        reach: q.reach,
-                    },
-                );
+                m.recycling.poses.insert(h, pose);
             }
         }
         let attached_ids: Vec<u32> = m.attached.indices().collect();

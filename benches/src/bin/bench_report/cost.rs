@@ -433,15 +433,19 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
          rapier's `Simplified` friction, which solves one friction constraint per manifold): \
          `StickSlip::STATE_BYTES_PER_CONTACT` = **{state_bytes} bytes** (law state, mean \
          normal force, bookkeeping), i.e. {} bytes per solver contact point on a box face. \
-         The slot packs the record: f32 law state, the colliders by arena index, \
-         the last slip speed as a bfloat16, and lock, liveness, sweep parity, regime and \
-         generation in one 16-bit word. Measured besides: the live heap of the EP world minus \
+         The slot packs the record without padding: f32 law state, the colliders by arena \
+         index on 24 bits each, the last slip speed as a bfloat16, liveness, sweep parity, \
+         regime and generation in one 16-bit word, and a one-byte lock. The store sweeps the \
+         records of vanished contacts every 8 steps, or as soon as it has created 1/16 of its \
+         slots since the last sweep (contacts that come and go). Measured besides: the live \
+         heap of the EP world minus \
          plain rapier's world of the same scene in the static scenes (`plane`, `pile`: both \
          recycle their resting pairs), the no-op-hook world's in the others (both built and \
          settled the same way), which \
-         adds the slot array's spare capacity (it grows by 1/16 and shrinks back after churn), \
+         adds the slot array's spare capacity (it grows by 1/32 and shrinks back after churn), \
          the key map (at steady state only rapier's merged cluster manifolds, whose \
-         `user_data` rapier resets), the free list, and the hook-flag bit set. Per-contact \
+         `user_data` rapier resets), the free list, the hook-flag bit sets, and the pose of \
+         each quiet collider (32 B: where its drift is measured from). Per-contact \
          reports are opt-in (`ReadBack::Contacts`, ~100 B a contact) and not on here: the \
          benches run `StickSlip::new` as a user would.\n",
         num(state_bytes / 4.0, 3)
