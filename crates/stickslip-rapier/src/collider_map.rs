@@ -5,7 +5,7 @@ use rapier::prelude::ColliderHandle;
 
 /// Largest arena index accepted (16.7 million colliders): the map is dense, so an index from
 /// an invalid or forged handle must not size it.
-const MAX_INDEX: u32 = 1 << 24;
+pub(crate) const MAX_INDEX: u32 = 1 << 24;
 
 /// Values attached to colliders.
 #[derive(Debug, Clone)]

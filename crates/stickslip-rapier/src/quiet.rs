@@ -2,7 +2,7 @@
 //! why): the quiet colliders, where their bodies were when they went quiet, and the shares of
 //! the limit and of rapier's recycle window that decide it.
 
-use crate::collider_map::{AtomicColliderBits, ColliderBits};
+use crate::collider_map::{AtomicColliderBits, ColliderBits, MAX_INDEX, reserve_slack};
 use rapier::prelude::*;
 
 /// Share of the recycle window a quiet body may drift (translation, plus the rotation's chord
@@ -50,13 +50,8 @@ impl Recycling {
     }
 }
 
-/// Largest collider arena index (exclusive) [`QuietPoses`] keeps a pose for (the map is
-/// dense: an index from a forged handle must not size it). A collider beyond it is never
-/// quiet.
-const MAX_INDEX: u32 = 1 << 24;
-
 /// The quiet poses by collider arena index, 32 bytes a slot: the pose and the low 16 bits of
-/// the collider handle's generation (a slot is empty while its reach is 0). Like the quiet
+/// the collider handle's generation (a slot is empty without a pose). Like the quiet
 /// bits, the map expects a collider to be detached before it is removed; the generation's
 /// low bits keep a pose from reaching a collider that took its index without (unless the
 /// index was reused 65 536 times in between: that collider's drift is then measured from
@@ -67,12 +62,8 @@ pub(crate) struct QuietPoses {
 }
 
 #[derive(Debug, Clone, Copy, Default)]
-#[repr(C, packed(2))]
 struct QuietSlot {
-    translation: [u32; 3],
-    rotation: [u32; 4],
-    /// bfloat16 bits of the reach; 0: empty.
-    reach: u16,
+    pose: Option<QuietPose>,
     generation: u16,
 }
 
@@ -84,13 +75,11 @@ impl QuietPoses {
         }
         let i = i as usize;
         if self.slots.len() <= i {
-            crate::collider_map::reserve_slack(&mut self.slots, i);
+            reserve_slack(&mut self.slots, i);
             self.slots.resize(i + 1, QuietSlot::default());
         }
         self.slots[i] = QuietSlot {
-            translation: pose.translation,
-            rotation: pose.rotation,
-            reach: pose.reach.get(),
+            pose: Some(pose),
             generation: generation as u16,
         };
     }
@@ -98,35 +87,22 @@ impl QuietPoses {
     pub fn remove(&mut self, handle: ColliderHandle) {
         if self.get(handle).is_some() {
             let i = handle.0.into_raw_parts().0 as usize;
-            self.slots[i].reach = 0;
+            self.slots[i].pose = None;
         }
     }
 
     pub fn get(&self, handle: ColliderHandle) -> Option<QuietPose> {
         let (i, generation) = handle.0.into_raw_parts();
-        let slot = *self.slots.get(i as usize)?;
-        let same = { slot.generation } == generation as u16;
-        same.then(|| {
-            Some(QuietPose {
-                translation: slot.translation,
-                rotation: slot.rotation,
-                reach: std::num::NonZeroU16::new(slot.reach)?,
-            })
-        })
-        .flatten()
+        let slot = self.slots.get(i as usize)?;
+        slot.pose.filter(|_| slot.generation == generation as u16)
     }
 
     /// The poses kept: arena index, low 16 bits of the generation, pose; by increasing index.
     pub fn iter(&self) -> impl Iterator<Item = (u32, u16, QuietPose)> + '_ {
-        self.slots.iter().enumerate().filter_map(|(i, s)| {
-            let s = *s;
-            let pose = QuietPose {
-                translation: s.translation,
-                rotation: s.rotation,
-                reach: std::num::NonZeroU16::new(s.reach)?,
-            };
-            Some((i as u32, s.generation, pose))
-        })
+        self.slots
+            .iter()
+            .enumerate()
+            .filter_map(|(i, s)| Some((i as u32, s.generation, s.pose?)))
     }
 }
 
@@ -139,13 +115,16 @@ impl QuietPoses {
 /// packed to 1e-4 rad would move its rim by millimetres, beyond the drift allowed). The reach
 /// is rounded up to 8 significant bits (bfloat16), so the drift it measures is never less than
 /// the exact reach's.
+// Packed to 2-byte alignment: 30 bytes, and an empty slot (`None`, by the reach's niche) and
+// the generation fit in 32.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[repr(C, packed(2))]
 pub(crate) struct QuietPose {
     /// x y z (z = 0 in 2D), f32 bits.
     translation: [u32; 3],
     /// Unit quaternion x y z w (in 2D: the unit complex, re im, then 0 0), f32 bits.
     rotation: [u32; 4],
-    /// bfloat16 bits of the reach (m), never 0 (0 marks an empty slot of [`QuietPoses`]).
+    /// bfloat16 bits of the reach (m), never 0.
     reach: std::num::NonZeroU16,
 }
 
@@ -180,7 +159,7 @@ impl QuietPose {
 
     /// The reach kept (m): the one given, rounded up to 8 significant bits.
     pub fn reach(&self) -> f32 {
-        f32::from_bits((self.reach.get() as u32) << 16)
+        f32::from_bits(({ self.reach }.get() as u32) << 16)
     }
 
     /// The stored form (for snapshots): translation, rotation, bfloat16 bits of the reach.
@@ -188,7 +167,7 @@ impl QuietPose {
         (
             self.translation.map(f32::from_bits),
             self.rotation.map(f32::from_bits),
-            self.reach.get(),
+            { self.reach }.get(),
         )
     }
 
