@@ -50,11 +50,11 @@ impl Recycling {
     }
 }
 
-/// The quiet poses by collider arena index, 32 bytes a slot: the pose and the low 16 bits of
+/// The quiet poses by collider arena index, 23 bytes a slot: the pose and the low 8 bits of
 /// the collider handle's generation (a slot is empty without a pose). Like the quiet
 /// bits, the map expects a collider to be detached before it is removed; the generation's
 /// low bits keep a pose from reaching a collider that took its index without (unless the
-/// index was reused 65 536 times in between: that collider's drift is then measured from
+/// index was reused 256 times in between: that collider's drift is then measured from
 /// the pose, and it is hooked again when it moves).
 #[derive(Debug, Clone, Default)]
 pub(crate) struct QuietPoses {
@@ -64,7 +64,7 @@ pub(crate) struct QuietPoses {
 #[derive(Debug, Clone, Copy, Default)]
 struct QuietSlot {
     pose: Option<QuietPose>,
-    generation: u16,
+    generation: u8,
 }
 
 impl QuietPoses {
@@ -80,7 +80,7 @@ impl QuietPoses {
         }
         self.slots[i] = QuietSlot {
             pose: Some(pose),
-            generation: generation as u16,
+            generation: generation as u8,
         };
     }
 
@@ -94,11 +94,11 @@ impl QuietPoses {
     pub fn get(&self, handle: ColliderHandle) -> Option<QuietPose> {
         let (i, generation) = handle.0.into_raw_parts();
         let slot = self.slots.get(i as usize)?;
-        slot.pose.filter(|_| slot.generation == generation as u16)
+        slot.pose.filter(|_| slot.generation == generation as u8)
     }
 
-    /// The poses kept: arena index, low 16 bits of the generation, pose; by increasing index.
-    pub fn iter(&self) -> impl Iterator<Item = (u32, u16, QuietPose)> + '_ {
+    /// The poses kept: arena index, low 8 bits of the generation, pose; by increasing index.
+    pub fn iter(&self) -> impl Iterator<Item = (u32, u8, QuietPose)> + '_ {
         self.slots
             .iter()
             .enumerate()
@@ -107,25 +107,89 @@ impl QuietPoses {
 }
 
 /// Where a quiet collider's body (or the collider, without one) was when its flag went off,
-/// and the collider's reach from that pose's origin (m), in 30 bytes: a quiet pose is kept
+/// and the collider's reach from that pose's origin (m), in 22 bytes: a quiet pose is kept
 /// for every collider of a resting pile, beside each contact's 35-byte record (with a
-/// SIMD-aligned `Pose` the map's slot was 80 bytes).
+/// SIMD-aligned `Pose` the map's slot was 80 bytes, with every f32 of the pose 32).
 ///
-/// The pose is kept exactly (f32 bits: a ground's reach is tens of metres, where a rotation
-/// packed to 1e-4 rad would move its rim by millimetres, beyond the drift allowed). The reach
-/// is rounded up to 8 significant bits (bfloat16), so the drift it measures is never less than
-/// the exact reach's.
-// Packed to 2-byte alignment: 30 bytes, and an empty slot (`None`, by the reach's niche) and
-// the generation fit in 32.
+/// The translation is kept exactly (f32 bits). In 3D the rotation is packed into 64 bits:
+/// the quaternion's largest component is dropped (it is the square root of one minus the
+/// others', taken non-negative: q and −q are the same rotation) and the other three kept as
+/// multiples of 2⁻¹⁹ (each is at most 1/√2). Each of the three is then within 2⁻²⁰ of the
+/// body's, the one dropped (at least 1/2) within 3·2⁻²⁰, the quaternions within 2√3·2⁻²⁰
+/// and the rotations within twice that: 4√3·2⁻²⁰ ≈ 6.6 µrad. Drift is measured between two packed poses (see
+/// [`Self::repacked`]), so a body that does not move has drifted by exactly nothing
+/// whatever its reach (a ground tens of metres wide), and one that moves is measured within
+/// twice that error times its reach (0.7 mm at 50 m, against a quarter of rapier's 50 mm
+/// window). In 2D the unit complex is kept exactly. The reach is rounded up to 8
+/// significant bits (bfloat16), so the drift it measures is never less than the exact
+/// reach's.
+// Packed to 1-byte alignment: 22 bytes, and an empty slot (`None`, by the reach's niche) and
+// the generation fit in 23.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[repr(C, packed(2))]
+#[repr(C, packed)]
 pub(crate) struct QuietPose {
     /// x y z (z = 0 in 2D), f32 bits.
     translation: [u32; 3],
-    /// Unit quaternion x y z w (in 2D: the unit complex, re im, then 0 0), f32 bits.
-    rotation: [u32; 4],
+    /// 3D: the packed quaternion (see [`pack_rotation`]); 2D: the unit complex, re im, f32 bits.
+    rotation: [u32; 2],
     /// bfloat16 bits of the reach (m), never 0.
     reach: std::num::NonZeroU16,
+}
+
+/// Scale of a packed quaternion component: 2¹⁹ units per 1 (a component other than the
+/// largest is at most 1/√2, so it fits in 20 bits with its sign).
+#[cfg(not(dim2))]
+const COMPONENT_SCALE: f32 = (1u32 << 19) as f32;
+/// Bits of a packed quaternion component.
+#[cfg(not(dim2))]
+const COMPONENT_BITS: u32 = 20;
+
+/// A unit quaternion x y z w in 64 bits: the three components other than the largest (in
+/// order, negated when the largest is negative) as 20-bit two's-complement multiples of 2⁻¹⁹
+/// from bit 0, and the largest's index in bits 60–61.
+#[cfg(not(dim2))]
+fn pack_rotation(q: [f32; 4]) -> [u32; 2] {
+    let mut big = 0;
+    for i in 1..4 {
+        if q[i].abs() > q[big].abs() {
+            big = i;
+        }
+    }
+    let sign = if q[big] < 0.0 { -1.0 } else { 1.0 };
+    let limit = 1i64 << (COMPONENT_BITS - 1);
+    let mut bits = (big as u64) << 60;
+    let mut shift = 0;
+    for (i, &v) in q.iter().enumerate() {
+        if i == big {
+            continue;
+        }
+        // A saturating cast: a value that is not a number packs to 0, never panics.
+        let k = ((v * sign * COMPONENT_SCALE).round() as i64).clamp(-limit, limit - 1);
+        bits |= (k as u64 & ((1 << COMPONENT_BITS) - 1)) << shift;
+        shift += COMPONENT_BITS;
+    }
+    [bits as u32, (bits >> 32) as u32]
+}
+
+/// The quaternion x y z w of [`pack_rotation`]'s bits (unit to f32 rounding).
+#[cfg(not(dim2))]
+fn unpack_rotation(packed: [u32; 2]) -> [f32; 4] {
+    let bits = packed[0] as u64 | (packed[1] as u64) << 32;
+    let big = (bits >> 60) as usize & 3;
+    let mut q = [0.0f32; 4];
+    let (mut shift, mut sum) = (0, 0.0f32);
+    for (i, v) in q.iter_mut().enumerate() {
+        if i == big {
+            continue;
+        }
+        let field = ((bits >> shift) as u32) << (32 - COMPONENT_BITS);
+        // Sign-extends the field; the multiple of 2⁻¹⁹ is exact in f32.
+        *v = ((field as i32) >> (32 - COMPONENT_BITS)) as f32 / COMPONENT_SCALE;
+        sum += *v * *v;
+        shift += COMPONENT_BITS;
+    }
+    q[big] = (1.0 - sum).max(0.0).sqrt();
+    q
 }
 
 impl QuietPose {
@@ -133,28 +197,36 @@ impl QuietPose {
         let [x, y, z] = crate::tangent::world(pose.translation);
         let q = pose.rotation;
         #[cfg(not(dim2))]
-        let rotation = [q.x, q.y, q.z, q.w];
+        let rotation = pack_rotation([q.x, q.y, q.z, q.w]);
         #[cfg(dim2)]
-        let rotation = [q.re, q.im, 0.0, 0.0];
+        let rotation = [q.re.to_bits(), q.im.to_bits()];
         QuietPose {
             translation: [x.to_bits(), y.to_bits(), z.to_bits()],
-            rotation: rotation.map(f32::to_bits),
+            rotation,
             reach: reach_up(reach),
         }
     }
 
     /// The pose kept.
     pub fn pose(&self) -> Pose {
-        let [x, y, z] = self.translation.map(f32::from_bits);
-        let [a, b, c, d] = self.rotation.map(f32::from_bits);
+        let [x, y, z] = { self.translation }.map(f32::from_bits);
         #[cfg(not(dim2))]
-        let rotation = Rotation::from_xyzw(a, b, c, d);
+        let rotation = {
+            let [a, b, c, d] = unpack_rotation(self.rotation);
+            Rotation::from_xyzw(a, b, c, d)
+        };
         #[cfg(dim2)]
         let rotation = {
-            let _ = (c, d);
-            Rotation::from_cos_sin_unchecked(a, b)
+            let [re, im] = { self.rotation }.map(f32::from_bits);
+            Rotation::from_cos_sin_unchecked(re, im)
         };
         Pose::from_parts(crate::tangent::vector([x, y, z]), rotation)
+    }
+
+    /// `pose` as this pose keeps it (its rotation packed the same way): what the drift from
+    /// this pose is measured to, so that an unmoved body has not drifted at all.
+    pub fn repacked(&self, pose: &Pose) -> Pose {
+        QuietPose::new(pose, 0.0).pose()
     }
 
     /// The reach kept (m): the one given, rounded up to 8 significant bits.
@@ -162,22 +234,34 @@ impl QuietPose {
         f32::from_bits(({ self.reach }.get() as u32) << 16)
     }
 
-    /// The stored form (for snapshots): translation, rotation, bfloat16 bits of the reach.
-    pub fn stored(&self) -> ([f32; 3], [f32; 4], u16) {
+    /// The stored form (for snapshots): translation, the rotation's bits as kept (see
+    /// [`QuietPose`]), bfloat16 bits of the reach.
+    pub fn stored(&self) -> ([f32; 3], [u32; 2], u16) {
         (
-            self.translation.map(f32::from_bits),
-            self.rotation.map(f32::from_bits),
+            { self.translation }.map(f32::from_bits),
+            self.rotation,
             { self.reach }.get(),
         )
     }
 
-    /// The pose of a stored form (from [`Self::stored`]); `None` for a reach of 0 bits.
-    pub fn from_stored(translation: [f32; 3], rotation: [f32; 4], reach: u16) -> Option<Self> {
-        Some(QuietPose {
+    /// The pose of a stored form (from [`Self::stored`]); `None` for a reach of 0 bits, a
+    /// translation or reach that is not finite, or a rotation that is not a unit one.
+    pub fn from_stored(translation: [f32; 3], rotation: [u32; 2], reach: u16) -> Option<Self> {
+        let pose = QuietPose {
             translation: translation.map(f32::to_bits),
-            rotation: rotation.map(f32::to_bits),
+            rotation,
             reach: std::num::NonZeroU16::new(reach)?,
-        })
+        };
+        #[cfg(not(dim2))]
+        let unit = unpack_rotation(rotation).iter().map(|v| v * v).sum::<f32>();
+        #[cfg(dim2)]
+        let unit = rotation
+            .map(f32::from_bits)
+            .iter()
+            .map(|v| v * v)
+            .sum::<f32>();
+        let finite = translation.iter().all(|v| v.is_finite()) && pose.reach().is_finite();
+        (finite && (unit - 1.0).abs() < 1e-4).then_some(pose)
     }
 }
 
@@ -195,6 +279,13 @@ fn reach_up(reach: f32) -> std::num::NonZeroU16 {
 mod tests {
     use super::*;
 
+    /// The angle (rad) of the rotation between two 3D poses.
+    #[cfg(not(dim2))]
+    fn angle(a: &Pose, b: &Pose) -> f32 {
+        let turn = (b.rotation * a.rotation.inverse()).normalize();
+        2.0 * Vector::new(turn.x, turn.y, turn.z).length().min(1.0).asin()
+    }
+
     #[test]
     fn stored_poses_come_back_exactly() {
         #[cfg(not(dim2))]
@@ -203,10 +294,77 @@ mod tests {
         let r = Rotation::new(2.9);
         let pose = Pose::from_parts(crate::tangent::vector([1.25, -2.5, 1e4]), r);
         let q = QuietPose::new(&pose, 0.7);
-        assert_eq!(q.pose(), pose);
+        assert_eq!(q.pose().translation, pose.translation);
         let (t, r, reach) = q.stored();
         assert_eq!(QuietPose::from_stored(t, r, reach), Some(q));
         assert_eq!(QuietPose::from_stored(t, r, 0), None);
+        assert_eq!(QuietPose::from_stored([f32::NAN, 0.0, 0.0], r, reach), None);
+        // The body's pose, packed again, is the kept one bit for bit: unmoved, no drift.
+        assert_eq!(q.repacked(&pose), q.pose());
+    }
+
+    /// Over rotations of every axis and angle (a fixed sequence), and the corner cases of
+    /// the packing (a component of ±1, two of equal size, a negative largest one), the pose
+    /// kept is within 4√3·2⁻²⁰ rad of the body's (exactly in 2D) and a unit rotation to f32
+    /// rounding.
+    #[test]
+    fn kept_rotations_are_within_the_packing_error() {
+        let bound = 4.0 * 3f32.sqrt() / (1u32 << 20) as f32;
+        let mut rotations = Vec::new();
+        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0
+        };
+        for _ in 0..20_000 {
+            let (x, y, z, a) = (next(), next(), next(), next() * std::f32::consts::PI);
+            #[cfg(not(dim2))]
+            rotations.push(Rotation::from_axis_angle(
+                Vector::new(x, y, z + 1e-3).normalize(),
+                a,
+            ));
+            #[cfg(dim2)]
+            {
+                let _ = (x, y, z);
+                rotations.push(Rotation::new(a));
+            }
+        }
+        #[cfg(not(dim2))]
+        {
+            let h = std::f32::consts::FRAC_1_SQRT_2;
+            for q in [
+                [1.0, 0.0, 0.0, 0.0],
+                [0.0, -1.0, 0.0, 0.0],
+                [0.0, 0.0, 0.0, -1.0],
+                [h, h, 0.0, 0.0],
+                [0.0, -h, 0.0, h],
+                [0.5, -0.5, 0.5, -0.5],
+                [-0.1, 0.2, -0.3, -(1.0f32 - 0.14).sqrt()],
+            ] {
+                rotations.push(Rotation::from_xyzw(q[0], q[1], q[2], q[3]).normalize());
+            }
+        }
+        for r in rotations {
+            let pose = Pose::from_parts(crate::tangent::vector([3.0, -1.0, 0.5]), r);
+            let q = QuietPose::new(&pose, 1.0);
+            let kept = q.pose();
+            #[cfg(not(dim2))]
+            {
+                assert!(
+                    angle(&pose, &kept) <= bound,
+                    "{r:?}: {}",
+                    angle(&pose, &kept)
+                );
+                assert!((kept.rotation.length() - 1.0).abs() < 1e-6, "{r:?}");
+            }
+            #[cfg(dim2)]
+            {
+                let _ = bound;
+                assert_eq!(kept, pose);
+            }
+        }
     }
 
     #[test]
@@ -221,8 +379,8 @@ mod tests {
     }
 
     #[test]
-    fn a_slot_of_the_quiet_map_is_32_bytes() {
-        assert_eq!(std::mem::size_of::<QuietSlot>(), 32);
+    fn a_slot_of_the_quiet_map_is_23_bytes() {
+        assert_eq!(std::mem::size_of::<QuietSlot>(), 23);
     }
 
     #[test]

@@ -89,7 +89,7 @@ use stickslip_core::law::Regime;
 use stickslip_core::waveform::Waveform;
 
 /// Version of the snapshot format written by this build (and the only one it reads).
-pub const FORMAT_VERSION: u32 = 6;
+pub const FORMAT_VERSION: u32 = 7;
 
 const MAGIC: [u8; 8] = *b"STKSLIP\0";
 /// Header kind of a [`StickSlipSnapshot`] file.
@@ -813,12 +813,14 @@ impl ResistingSnapshot {
 /// A quiet collider and the pose its drift is measured from.
 #[derive(Debug, Clone, Copy, Serialize, Deserialize)]
 struct QuietEntry {
-    /// The collider's arena index and the low 16 bits of its generation (what the modifier
+    /// The collider's arena index and the low 8 bits of its generation (what the modifier
     /// keeps of it).
     collider: Handle,
     translation: [f32; 3],
-    /// Unit quaternion, x y z w.
-    rotation: [f32; 4],
+    /// The rotation as the modifier keeps it: in 3D the unit quaternion packed into 64 bits
+    /// (its largest component dropped, the others as 20-bit multiples of 2⁻¹⁹), in 2D the
+    /// unit complex's f32 bits.
+    rotation: [u32; 2],
     /// bfloat16 bits of the collider's reach (m).
     reach: u16,
 }
@@ -1119,25 +1121,21 @@ impl<H> StickSlip<H> {
                     "not in increasing collider order",
                 ));
             }
-            let pose = crate::quiet::QuietPose::from_stored(q.translation, q.rotation, q.reach)
-                .filter(|p| {
-                    q.translation
-                        .iter()
-                        .chain(&q.rotation)
-                        .all(|v| v.is_finite())
-                        && p.reach().is_finite()
-                });
+            let pose = crate::quiet::QuietPose::from_stored(q.translation, q.rotation, q.reach);
             let Some(pose) = pose else {
-                return Err(invalid("quiet colliders", "a pose is not finite"));
+                return Err(invalid(
+                    "quiet colliders",
+                    "a pose is not finite or its rotation not a unit one",
+                ));
             };
-            if q.collider.generation > u16::MAX as u32 {
-                return Err(invalid("quiet colliders", "a generation beyond 16 bits"));
+            if q.collider.generation > u8::MAX as u32 {
+                return Err(invalid("quiet colliders", "a generation beyond 8 bits"));
             }
             // The live collider at the index, if its generation's low bits are the pose's.
             let live = colliders
                 .get_unknown_gen(q.collider.index)
                 .map(|(_, h)| h)
-                .filter(|h| h.0.into_raw_parts().1 & 0xFFFF == q.collider.generation);
+                .filter(|h| h.0.into_raw_parts().1 & 0xFF == q.collider.generation);
             if let Some(h) = live
                 && m.flagged.contains(h)
                 && m.attached.contains(h)

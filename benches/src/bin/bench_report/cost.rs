@@ -445,7 +445,7 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
          adds the slot array's spare capacity (it grows by 1/32 and shrinks back after churn), \
          the key map (at steady state only rapier's merged cluster manifolds, whose \
          `user_data` rapier resets), the free list, the hook-flag bit sets, and the pose of \
-         each quiet collider (32 B: where its drift is measured from). Per-contact \
+         each quiet collider (23 B: where its drift is measured from). Per-contact \
          reports are opt-in (`ReadBack::Contacts`, ~100 B a contact) and not on here: the \
          benches run `StickSlip::new` as a user would.\n",
         num(state_bytes / 4.0, 3)
