@@ -599,10 +599,13 @@ impl<H> StickSlip<H> {
             // A pair the user filters (a filter flag on an unattached collider) is updated
             // in full at every step, also once its bodies sleep and are woken: it stays
             // hooked.
+            // (A candidate still to go quiet had none in 1.: only the other colliders are
+            // looked up, which spares the pile's resting pairs two reads of the arena.)
             let filtered = !hooked
-                && [c1, c2]
-                    .into_iter()
-                    .any(|h| colliders.get(h).is_some_and(|c| !user_bits(c).is_empty()));
+                && [(c1, a1), (c2, a2)].into_iter().any(|(h, attached)| {
+                    !(attached && flagged.contains(h) && next.contains(h))
+                        && colliders.get(h).is_some_and(|c| !user_bits(c).is_empty())
+                });
             if filtered {
                 for h in self.sides_to_hook(bodies, colliders, c1, c2) {
                     next.set(h, false);
@@ -643,10 +646,13 @@ impl<H> StickSlip<H> {
             let keeps = |rec: &ContactRecord, same: bool| {
                 same && (!pair_moves || own == Some(rec.state.limit.to_bits()))
             };
-            let composite = clustering
-                && [c1, c2]
-                    .into_iter()
-                    .any(|h| colliders.get(h).is_some_and(|c| is_composite(c.shape())));
+            // Asked only of touching pairs (a shape is behind a pointer).
+            let composite = || {
+                clustering
+                    && [c1, c2]
+                        .into_iter()
+                        .any(|h| colliders.get(h).is_some_and(|c| is_composite(c.shape())))
+            };
             let mut touching = pair
                 .solver_manifolds()
                 .iter()
@@ -679,7 +685,7 @@ impl<H> StickSlip<H> {
                     });
                     match kept.flatten() {
                         Some(meas) => {
-                            if let (true, Some(meas)) = (composite, meas) {
+                            if let (Some(meas), true) = (meas, composite()) {
                                 self.patches_measured.insert(ud, meas);
                             }
                             carried.set(c1, true);
@@ -703,6 +709,7 @@ impl<H> StickSlip<H> {
                                 })
                     });
                     if all {
+                        let composite = composite();
                         for m in pair.solver_manifolds() {
                             if m.data.solver_contacts.is_empty() {
                                 continue;
