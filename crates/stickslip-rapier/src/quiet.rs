@@ -117,7 +117,7 @@ impl QuietPoses {
 /// multiples of 2⁻¹⁹ (each is at most 1/√2). Each of the three is then within 2⁻²⁰ of the
 /// body's, the one dropped (at least 1/2) within 3·2⁻²⁰, the quaternions within 2√3·2⁻²⁰
 /// and the rotations within twice that: 4√3·2⁻²⁰ ≈ 6.6 µrad. Drift is measured between two packed poses (see
-/// [`Self::repacked`]), so a body that does not move has drifted by exactly nothing
+/// [`Self::as_kept`]), so a body that does not move has drifted by exactly nothing
 /// whatever its reach (a ground tens of metres wide), and one that moves is measured within
 /// twice that error times its reach (0.7 mm at 50 m, against a quarter of rapier's 50 mm
 /// window). In 2D the unit complex is kept exactly. The reach is rounded up to 8
@@ -223,9 +223,9 @@ impl QuietPose {
         Pose::from_parts(crate::tangent::vector([x, y, z]), rotation)
     }
 
-    /// `pose` as this pose keeps it (its rotation packed the same way): what the drift from
-    /// this pose is measured to, so that an unmoved body has not drifted at all.
-    pub fn repacked(&self, pose: &Pose) -> Pose {
+    /// `pose` as a quiet pose keeps it (its rotation packed): what the drift from a kept pose
+    /// is measured to, so that an unmoved body has not drifted at all.
+    pub fn as_kept(pose: &Pose) -> Pose {
         QuietPose::new(pose, 0.0).pose()
     }
 
@@ -300,7 +300,17 @@ mod tests {
         assert_eq!(QuietPose::from_stored(t, r, 0), None);
         assert_eq!(QuietPose::from_stored([f32::NAN, 0.0, 0.0], r, reach), None);
         // The body's pose, packed again, is the kept one bit for bit: unmoved, no drift.
-        assert_eq!(q.repacked(&pose), q.pose());
+        assert_eq!(QuietPose::as_kept(&pose), q.pose());
+        // A stored rotation that is not a unit one (untrusted snapshot files) is refused.
+        #[cfg(not(dim2))]
+        let bad = {
+            let max = (1u64 << 19) - 1;
+            let bits = max | max << 20 | max << 40;
+            [bits as u32, (bits >> 32) as u32]
+        };
+        #[cfg(dim2)]
+        let bad = [0, 0];
+        assert_eq!(QuietPose::from_stored(t, bad, reach), None);
     }
 
     /// Over rotations of every axis and angle (a fixed sequence), and the corner cases of

@@ -476,7 +476,7 @@ impl<H> StickSlip<H> {
                     !(motion <= MAX_SANE_SPEED as f32 * dt)
                 } else {
                     let now = pose_of(bodies, c);
-                    !(drift(&q.pose(), &q.repacked(&now), reach) + motion <= limit)
+                    !(drift(&q.pose(), &QuietPose::as_kept(&now), reach) + motion <= limit)
                 }
             });
             // A filter flag the user set between steps: rapier updates its pairs in full.
