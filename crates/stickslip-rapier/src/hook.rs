@@ -201,11 +201,8 @@ impl<H> StickSlip<H> {
                         *m.friction = rec.state.limit;
                     }
                 } else {
-                    self.apply(
-                        ctx,
-                        rec,
-                        patch.then(|| self.patches_measured.get(&ours)).flatten(),
-                    );
+                    let measured = patch.then(|| self.patches_measured.get(ours)).flatten();
+                    self.apply(ctx, rec, measured.as_ref());
                 }
                 if patch {
                     // A dynamic side first: the narrow phase finds a pair by walking the
@@ -219,7 +216,8 @@ impl<H> StickSlip<H> {
                     } else {
                         (ctx.collider1, ctx.collider2)
                     };
-                    crate::contact_store::lock(&self.patches_seen).push((a, b, ours));
+                    let index = |h: ColliderHandle| h.0.into_raw_parts().0;
+                    crate::contact_store::lock(&self.patches_seen).push((index(a), index(b), ours));
                 }
             });
     }

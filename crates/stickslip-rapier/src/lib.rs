@@ -55,6 +55,7 @@ mod hook;
 mod measure;
 mod modifier;
 mod pair_law;
+mod patches;
 pub mod prelude;
 mod quiet;
 mod rapier_compat;

@@ -2,8 +2,7 @@
 
 use crate::collider_map::{ColliderBits, ColliderMap};
 use crate::contact_store::ContactStore;
-use crate::fast_hash::HashMap;
-use crate::measure::{Measured, measure};
+use crate::measure::measure;
 use crate::pair_law::PairLaws;
 use crate::quiet::Recycling;
 use crate::report::{ContactReport, WorldTotals};
@@ -178,10 +177,11 @@ pub struct StickSlip<H = ()> {
     /// Contact patches of composite shapes the hook saw this step (pair and our `user_data`):
     /// rapier rebuilds a clustered manifold every step and carries its impulses over by
     /// nearest position, stale points' included, so the next hook cannot read the last solve
-    /// from it; `end_step` measures these right after the solve instead.
-    pub(crate) patches_seen: std::sync::Mutex<Vec<(ColliderHandle, ColliderHandle, u32)>>,
+    /// from it; `end_step` measures these right after the solve instead. The colliders by
+    /// arena index (12 bytes a patch, not 20): the manifold's `user_data` tells it apart.
+    pub(crate) patches_seen: std::sync::Mutex<Vec<(u32, u32, u32)>>,
     /// What `end_step` measured for those patches, by `user_data`.
-    pub(crate) patches_measured: HashMap<u32, Measured>,
+    pub(crate) patches_measured: crate::patches::PatchMeasures,
     /// Which attached colliders have their flag off because their contacts are quiet (see
     /// `recycle`).
     pub(crate) recycling: Recycling,
@@ -217,7 +217,7 @@ impl<H> StickSlip<H> {
             reports: Vec::new(),
             totals: WorldTotals::default(),
             patches_seen: Default::default(),
-            patches_measured: HashMap::default(),
+            patches_measured: Default::default(),
             recycling: Recycling::default(),
             rolling: Default::default(),
         }
@@ -646,6 +646,8 @@ impl<H> StickSlip<H> {
         let mark = self.clock.mark();
         self.read_back_step(narrow_phase, bodies, colliders, dt);
         self.settle_after_step(narrow_phase, bodies, colliders, mark);
+        // Settling measured more patches: sorted for the next step's hooks.
+        self.patches_measured.seal();
     }
 
     /// The totals and reports of the step just solved (as [`Self::read_back`] asks), and the
@@ -726,7 +728,7 @@ impl<H> StickSlip<H> {
             .unwrap_or_else(|e| e.into_inner());
         self.patches_measured.clear();
         for (c1, c2, user_data) in seen.drain(..) {
-            let Some(pair) = narrow_phase.contact_pair(c1, c2) else {
+            let Some(pair) = narrow_phase.contact_pair_unknown_gen(c1, c2) else {
                 continue;
             };
             if let Some(m) = pair
@@ -738,9 +740,8 @@ impl<H> StickSlip<H> {
                     .insert(user_data, measure(m, &m.data.solver_contacts, dt, None));
             }
         }
-        if self.patches_measured.capacity() > 4 * self.patches_measured.len() + 64 {
-            self.patches_measured.shrink_to_fit();
-        }
+        // Sorted now: settling measures some of these again (see `PatchMeasures::insert`).
+        self.patches_measured.seal();
     }
 
     /// Rolling and spinning resistance for the coming step (see

@@ -116,8 +116,9 @@ impl QuietPoses {
 /// others', taken non-negative: q and −q are the same rotation) and the other three kept as
 /// multiples of 2⁻¹⁹ (each is at most 1/√2). Each of the three is then within 2⁻²⁰ of the
 /// body's, the one dropped (at least 1/2) within 3·2⁻²⁰, the quaternions within 2√3·2⁻²⁰
-/// and the rotations within twice that: 4√3·2⁻²⁰ ≈ 6.6 µrad. Drift is measured between two packed poses (see
-/// [`Self::as_kept`]), so a body that does not move has drifted by exactly nothing
+/// and the rotations within twice that: 4√3·2⁻²⁰ ≈ 6.6 µrad. Drift is measured between two
+/// packed poses (the body's is packed as it would be kept, first bounded from the packed
+/// rotations, [`Self::surely_within`]), so a body that does not move has drifted by exactly nothing
 /// whatever its reach (a ground tens of metres wide), and one that moves is measured within
 /// twice that error times its reach (0.7 mm at 50 m, against a quarter of rapier's 50 mm
 /// window). In 2D the unit complex is kept exactly. The reach is rounded up to 8
@@ -223,10 +224,48 @@ impl QuietPose {
         Pose::from_parts(crate::tangent::vector([x, y, z]), rotation)
     }
 
-    /// `pose` as a quiet pose keeps it (its rotation packed): what the drift from a kept pose
-    /// is measured to, so that an unmoved body has not drifted at all.
-    pub fn as_kept(pose: &Pose) -> Pose {
-        QuietPose::new(pose, 0.0).pose()
+    /// Whether the drift from this kept pose to `now` (the body's pose packed the same way:
+    /// drift is measured between packed poses) at `reach`, plus `motion`, is surely at most `limit`, told from
+    /// the packed rotations without unpacking them: `false` when the bound cannot tell, and
+    /// the drift is then measured.
+    ///
+    /// For unit quaternions a and b, the half-turn sine between them is
+    /// √(1 − (a·b)²) = |a − b| |a + b| / 2 ≤ |a − b|. Packed with the same largest component,
+    /// the other three differ by whole multiples of 2⁻¹⁹, and the largest ones (each at least
+    /// 1/2, so their sum at least 1) by (Σb² − Σa²)/(a_max + b_max), at most |Σb² − Σa²|, the
+    /// sums over the other three. The bound, with a margin for the f32 arithmetic of the
+    /// measured drift, is at least what that measurement gives: where the bound says
+    /// within, the measurement says so too, and the two decide alike.
+    #[cfg(not(dim2))]
+    pub fn surely_within(&self, now: &QuietPose, reach: f32, motion: f32, limit: f32) -> bool {
+        // Slack on the half-turn sine for the rounding of the measured one (a few f32 ulps of
+        // quaternion components) and relative margin for the sums in f32.
+        const SINE_SLACK: f64 = 1e-6;
+        const MARGIN: f64 = 1e-4;
+        let bits = |p: [u32; 2]| p[0] as u64 | (p[1] as u64) << 32;
+        let (a, b) = (bits(self.rotation), bits(now.rotation));
+        if (a >> 60) & 3 != (b >> 60) & 3 {
+            return false;
+        }
+        let (mut diff, mut sum_a, mut sum_b) = (0i64, 0i64, 0i64);
+        for i in 0..3 {
+            let field = |x: u64| {
+                let f = ((x >> (COMPONENT_BITS * i)) as u32) << (32 - COMPONENT_BITS);
+                ((f as i32) >> (32 - COMPONENT_BITS)) as i64
+            };
+            let (ka, kb) = (field(a), field(b));
+            diff += (ka - kb) * (ka - kb);
+            sum_a += ka * ka;
+            sum_b += kb * kb;
+        }
+        let unit = 1.0 / (COMPONENT_SCALE as f64 * COMPONENT_SCALE as f64);
+        let largest = (sum_b - sum_a) as f64 * unit;
+        let sine = (diff as f64 * unit + largest * largest).sqrt() + SINE_SLACK;
+        let [ta, tb] = [self.translation, now.translation]
+            .map(|t| crate::tangent::vector(t.map(f32::from_bits)));
+        let translation = (tb - ta).length() as f64;
+        let bound = translation + 2.0 * sine * reach as f64 + motion as f64;
+        bound <= limit as f64 * (1.0 - MARGIN)
     }
 
     /// The reach kept (m): the one given, rounded up to 8 significant bits.
@@ -275,6 +314,17 @@ fn reach_up(reach: f32) -> std::num::NonZeroU16 {
     std::num::NonZeroU16::new(high).unwrap_or(std::num::NonZeroU16::MIN)
 }
 
+/// A fixed sequence of numbers in [−1, 1) from `seed` (xorshift), for the tests.
+#[cfg(test)]
+pub(crate) fn uniform_sequence(mut seed: u64) -> impl FnMut() -> f32 {
+    move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -300,7 +350,7 @@ mod tests {
         assert_eq!(QuietPose::from_stored(t, r, 0), None);
         assert_eq!(QuietPose::from_stored([f32::NAN, 0.0, 0.0], r, reach), None);
         // The body's pose, packed again, is the kept one bit for bit: unmoved, no drift.
-        assert_eq!(QuietPose::as_kept(&pose), q.pose());
+        assert_eq!(QuietPose::new(&pose, 0.0).pose(), q.pose());
         // A stored rotation that is not a unit one (untrusted snapshot files) is refused.
         #[cfg(not(dim2))]
         let bad = {
@@ -321,13 +371,7 @@ mod tests {
     fn kept_rotations_are_within_the_packing_error() {
         let bound = 4.0 * 3f32.sqrt() / (1u32 << 20) as f32;
         let mut rotations = Vec::new();
-        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0
-        };
+        let mut next = uniform_sequence(0x9E37_79B9_7F4A_7C15);
         for _ in 0..20_000 {
             let (x, y, z, a) = (next(), next(), next(), next() * std::f32::consts::PI);
             #[cfg(not(dim2))]

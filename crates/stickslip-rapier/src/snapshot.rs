@@ -996,14 +996,15 @@ impl<H> StickSlip<H> {
                 let mut patches: Vec<PatchSnapshot> = self
                     .patches_measured
                     .iter()
-                    .map(|(&user_data, m)| PatchSnapshot {
+                    .map(|(user_data, m)| PatchSnapshot {
                         user_data,
                         normal_force: m.normal_force,
                         mu: crate::tangent::world(m.mu),
                         warm_start_impulse: m.warm_start_impulse,
                     })
                     .collect();
-                // The map's order never matters; sorted, equal states give equal snapshots.
+                // Sealed by every `end_step`, so already in order; sorted all the same, as the
+                // restore requires.
                 patches.sort_by_key(|p| p.user_data);
                 patches
             },
@@ -1172,6 +1173,7 @@ impl<H> StickSlip<H> {
                 },
             );
         }
+        m.patches_measured.seal();
         let mut resisting = Vec::new();
         for (k, p) in s.rolling.pairs.iter().enumerate() {
             if k > 0 && s.rolling.pairs[k - 1].colliders >= p.colliders {
