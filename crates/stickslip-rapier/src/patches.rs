@@ -28,6 +28,16 @@ struct PatchEntry {
     mu: Vector,
 }
 
+impl PatchEntry {
+    fn measured(&self) -> Measured {
+        Measured {
+            normal_force: self.normal_force,
+            mu: self.mu,
+            warm_start_impulse: self.warm_start_impulse,
+        }
+    }
+}
+
 impl PatchMeasures {
     /// Forgets every patch (keeps the memory for the next step's).
     pub fn clear(&mut self) {
@@ -98,26 +108,12 @@ impl PatchMeasures {
                 self.sealed + tail
             }
         };
-        let entry = self.entries[at];
-        Some(Measured {
-            normal_force: entry.normal_force,
-            mu: entry.mu,
-            warm_start_impulse: entry.warm_start_impulse,
-        })
+        Some(self.entries[at].measured())
     }
 
     /// The patches: by increasing `user_data` once sealed.
     pub fn iter(&self) -> impl Iterator<Item = (u32, Measured)> + '_ {
-        self.entries.iter().map(|e| {
-            (
-                e.user_data,
-                Measured {
-                    normal_force: e.normal_force,
-                    mu: e.mu,
-                    warm_start_impulse: e.warm_start_impulse,
-                },
-            )
-        })
+        self.entries.iter().map(|e| (e.user_data, e.measured()))
     }
 
     /// Heap bytes held (capacity included).

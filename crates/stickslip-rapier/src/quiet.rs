@@ -117,9 +117,9 @@ impl QuietPoses {
 /// multiples of 2⁻¹⁹ (each is at most 1/√2). Each of the three is then within 2⁻²⁰ of the
 /// body's, the one dropped (at least 1/2) within 3·2⁻²⁰, the quaternions within 2√3·2⁻²⁰
 /// and the rotations within twice that: 4√3·2⁻²⁰ ≈ 6.6 µrad. Drift is measured between two
-/// packed poses (the body's is packed as it would be kept, first bounded from the packed
-/// rotations, [`Self::surely_within`]), so a body that does not move has drifted by exactly nothing
-/// whatever its reach (a ground tens of metres wide), and one that moves is measured within
+/// packed poses (the body's packed as it would be kept; first bounded from the packed
+/// rotations, [`Self::surely_within`]), so a body that does not move has drifted by exactly
+/// nothing whatever its reach (a ground tens of metres wide), and one that moves is measured within
 /// twice that error times its reach (0.7 mm at 50 m, against a quarter of rapier's 50 mm
 /// window). In 2D the unit complex is kept exactly. The reach is rounded up to 8
 /// significant bits (bfloat16), so the drift it measures is never less than the exact
@@ -225,9 +225,9 @@ impl QuietPose {
     }
 
     /// Whether the drift from this kept pose to `now` (the body's pose packed the same way:
-    /// drift is measured between packed poses) at `reach`, plus `motion`, is surely at most `limit`, told from
-    /// the packed rotations without unpacking them: `false` when the bound cannot tell, and
-    /// the drift is then measured.
+    /// drift is measured between packed poses) at `reach`, plus `motion`, is surely at most
+    /// `limit`, told from the packed rotations without unpacking them: `false` when the bound
+    /// cannot tell, and the drift is then measured.
     ///
     /// For unit quaternions a and b, the half-turn sine between them is
     /// √(1 − (a·b)²) = |a − b| |a + b| / 2 ≤ |a − b|. Packed with the same largest component,
