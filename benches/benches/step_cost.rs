@@ -449,7 +449,21 @@ fn probe(spec: &str, mode: Mode) {
             m.state_heap_bytes()
         )
     });
-    println!("{scene_name} {variant_name}: {ns:.0} ns/step over {steps} steps{recycled}{records}");
+    // Whether the variant's world rests as another's does: awake dynamic bodies and their
+    // mean speed at the end.
+    let (awake, speed) = b
+        .world
+        .bodies
+        .iter()
+        .filter(|(_, rb)| rb.is_dynamic() && !rb.is_sleeping())
+        .fold((0usize, 0.0f64), |(n, v), (_, rb)| {
+            (n + 1, v + rb.linvel().length() as f64)
+        });
+    let mean_speed = if awake > 0 { speed / awake as f64 } else { 0.0 };
+    println!(
+        "{scene_name} {variant_name}: {ns:.0} ns/step over {steps} steps, {awake} bodies awake \
+         (mean speed {mean_speed:.2e} m/s){recycled}{records}"
+    );
 }
 
 fn main() {
