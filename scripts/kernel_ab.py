@@ -11,13 +11,14 @@ neighbours only ever slow a run down) and the mean over the classes.
 """
 import os
 import re
+import shutil
 import statistics
 import subprocess
 import sys
 import tempfile
 
-STEPS = 512  # recorded steps per class (the bench's full mode); `all` has every class's
-CLASSES = 9
+STEPS = 512  # recorded steps per class in the bench's full mode
+CLASSES = 9  # `all` replays every class's steps: CLASSES * STEPS
 
 base, new, rounds = sys.argv[1], sys.argv[2], int(sys.argv[3])
 filt = sys.argv[4:]
@@ -25,9 +26,16 @@ unit = {"ns": 1e-3, "µs": 1.0, "us": 1.0, "ms": 1e3}
 res = {"base": {}, "new": {}}
 for _ in range(rounds):
     for name, binary in (("base", base), ("new", new)):
-        env = dict(os.environ, CRITERION_HOME=tempfile.mkdtemp())
+        home = tempfile.mkdtemp()
+        # The full mode's recorded steps (STEPS a class), whatever the caller's environment.
+        env = {k: v for k, v in os.environ.items() if k != "STICKSLIP_BENCH_QUICK"}
+        env["CRITERION_HOME"] = home
         args = [binary, "--bench", "--warm-up-time", "0.5", "--measurement-time", "1.5", "--noplot"]
-        out = subprocess.run(args + filt, capture_output=True, text=True, env=env).stdout
+        run = subprocess.run(args + filt, capture_output=True, text=True, env=env)
+        shutil.rmtree(home, ignore_errors=True)
+        if run.returncode != 0:
+            sys.exit(f"{binary} failed ({run.returncode}):\n{run.stderr}")
+        out = run.stdout
         cls = None
         for line in out.splitlines():
             m = re.match(r"^kernel/step/(\S+)", line)
