@@ -1488,11 +1488,11 @@ impl<C: SlidingCurve> ElastoPlastic<C> {
     }
 
     /// The band's lower edge and the regime of a state after a step at level `m`. A state
-    /// whose switch is fully on up to round-off (α ≥ 1 − [`ALPHA_FLAT`], which a state tracking a
-    /// curve equal to U approaches only asymptotically) counts as sliding; a state put onto
-    /// the band's lower edge counts as on it, as in the step (else a slide at μ_ba = μ_max,
-    /// whose state is renormalized onto |μ| = L every step, reads sticking whenever round-off
-    /// leaves it one ulp inside).
+    /// whose switch is fully on up to round-off (α ≥ 1 − [`ALPHA_FLAT`], which a state
+    /// tracking a curve equal to U approaches only asymptotically) counts as sliding; a state
+    /// put onto the band's lower edge counts as on it, as in the step (else a slide at
+    /// μ_ba = μ_max, whose state is renormalized onto |μ| = L every step, reads sticking
+    /// whenever round-off leaves it one ulp inside).
     fn classify(&self, mu: Vec2, sigma: f64, m: f64) -> (f64, Regime) {
         let (lo, hi) = self.band(sigma, m);
         let mut mag = norm(mu);
