@@ -291,6 +291,13 @@ fn extras(scene: Scene, variants: &[Variant], mode: Mode) -> Value {
         let active = b.modifier().map(|m| m.active_contacts());
         let capacity = b.modifier().map(|m| m.state_capacity());
         let state_heap = b.modifier().map(|m| m.state_heap_bytes());
+        let heap = b.modifier().map(|m| m.heap_bytes());
+        let heap_parts = b.modifier().map(|m| {
+            m.heap_parts()
+                .iter()
+                .map(|&(part, bytes)| (part.to_string(), json!(bytes)))
+                .collect::<serde_json::Map<_, _>>()
+        });
         rows.push(json!({
             "variant": variant.name(),
             "manifolds": manifolds,
@@ -303,6 +310,8 @@ fn extras(scene: Scene, variants: &[Variant], mode: Mode) -> Value {
             "stickslip_active_contacts": active,
             "stickslip_state_slots": capacity,
             "stickslip_state_heap_bytes": state_heap,
+            "stickslip_heap_bytes": heap,
+            "stickslip_heap_parts": heap_parts,
             "sane": sane,
         }));
         benches.push(b);
@@ -443,10 +452,18 @@ fn probe(spec: &str, mode: Mode) {
     let (manifolds, _, _) = b.contacts();
     let records = b.modifier().map_or(String::new(), |m| {
         format!(
-            ", {} records in {} slots ({} B by the store's count) for {manifolds} active manifolds",
+            ", {} records in {} slots ({} B by the store's count, {} B in all: {}) for \
+             {manifolds} active manifolds",
             m.active_contacts(),
             m.state_capacity(),
-            m.state_heap_bytes()
+            m.state_heap_bytes(),
+            m.heap_bytes(),
+            m.heap_parts()
+                .iter()
+                .filter(|(_, bytes)| *bytes > 0)
+                .map(|(part, bytes)| format!("{part} {bytes}"))
+                .collect::<Vec<_>>()
+                .join(", ")
         )
     });
     // Whether the variant's world rests as another's does: awake dynamic bodies and their
@@ -515,7 +532,7 @@ fn main() {
         for r in v["variants"].as_array().into_iter().flatten() {
             println!(
                 "  {:<18} {:>6} manifolds {:>7} points {:>9.1} allocs/step {:>12} live B \
-                 ({} records, {} slots, {} state B) {:>12.0} ns/step (paired)",
+                 ({} records, {} slots, {} state B, {} stickslip B) {:>12.0} ns/step (paired)",
                 r["variant"].as_str().unwrap_or(""),
                 r["manifolds"],
                 r["points"],
@@ -524,6 +541,7 @@ fn main() {
                 r["stickslip_active_contacts"],
                 r["stickslip_state_slots"],
                 r["stickslip_state_heap_bytes"],
+                r["stickslip_heap_bytes"],
                 r["paired_ns_per_step"].as_f64().unwrap_or(f64::NAN),
             );
         }

@@ -63,6 +63,11 @@ impl<T> ColliderMap<T> {
         }
     }
 
+    /// Heap bytes held (capacity included).
+    pub fn heap_bytes(&self) -> usize {
+        crate::heap::vec_bytes(&self.slots)
+    }
+
     /// Whether no collider has a value.
     pub fn is_empty(&self) -> bool {
         self.len == 0
@@ -114,6 +119,11 @@ impl ColliderBits {
         }
     }
 
+    /// Heap bytes held (capacity included).
+    pub fn heap_bytes(&self) -> usize {
+        crate::heap::vec_bytes(&self.words)
+    }
+
     /// Clears every bit (keeping the memory).
     pub fn clear(&mut self) {
         self.words.fill(0);
@@ -150,6 +160,11 @@ pub(crate) struct AtomicColliderBits {
 }
 
 impl AtomicColliderBits {
+    /// Heap bytes held (capacity included).
+    pub fn heap_bytes(&self) -> usize {
+        crate::heap::vec_bytes(&self.words)
+    }
+
     /// Makes room for `handle`'s bit.
     pub fn cover(&mut self, handle: ColliderHandle) {
         if let Some(i) = ColliderBits::index(handle)

@@ -51,6 +51,7 @@
 mod collider_map;
 mod contact_store;
 mod fast_hash;
+mod heap;
 mod hook;
 mod measure;
 mod modifier;

@@ -105,6 +105,14 @@ pub(crate) struct PairLaws {
 }
 
 impl PairLaws {
+    /// Heap bytes held (capacity included): palette, own materials, overrides, combined laws.
+    pub fn heap_bytes(&self) -> usize {
+        crate::heap::vec_bytes(&self.palette.0)
+            + self.materials.heap_bytes()
+            + crate::heap::map_bytes(&self.pairs)
+            + crate::heap::map_bytes(&self.combined.read())
+    }
+
     /// Laws whose attached colliders default to `default`.
     pub fn new(default: FrictionMaterial) -> Self {
         PairLaws {

@@ -117,7 +117,6 @@ impl PatchMeasures {
     }
 
     /// Heap bytes held (capacity included).
-    #[cfg(test)]
     pub fn heap_bytes(&self) -> usize {
         self.entries.capacity() * std::mem::size_of::<PatchEntry>()
     }

@@ -44,6 +44,23 @@ pub(crate) struct Recycling {
 }
 
 impl Recycling {
+    /// Heap bytes held (capacity included): the poses and every bit set.
+    pub fn heap_bytes(&self) -> usize {
+        [
+            &self.quiet,
+            &self.wake,
+            &self.next,
+            &self.still,
+            &self.moving,
+            &self.carried,
+        ]
+        .iter()
+        .map(|b| b.heap_bytes())
+        .sum::<usize>()
+            + self.poses.heap_bytes()
+            + self.active.heap_bytes()
+    }
+
     /// Colliders whose contacts must be hooked at the next step.
     pub fn wake(&mut self, collider: ColliderHandle) {
         self.wake.set(collider, true);
@@ -68,6 +85,11 @@ struct QuietSlot {
 }
 
 impl QuietPoses {
+    /// Heap bytes held (capacity included).
+    pub fn heap_bytes(&self) -> usize {
+        crate::heap::vec_bytes(&self.slots)
+    }
+
     pub fn insert(&mut self, handle: ColliderHandle, pose: QuietPose) {
         let (i, generation) = handle.0.into_raw_parts();
         if i >= MAX_INDEX {

@@ -197,6 +197,11 @@ fn rolling_freedom(
 }
 
 impl Rolling {
+    /// Heap bytes held (capacity included).
+    pub fn heap_bytes(&self) -> usize {
+        crate::heap::map_bytes(&self.pairs)
+    }
+
     /// The body of a collider, or for one without, the anchor: a fixed body at the origin
     /// that stickslip adds to the world once (marked with [`JOINT_TAG`] as its `user_data`,
     /// and taken over from a restored world that has one).
