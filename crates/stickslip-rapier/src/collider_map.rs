@@ -136,6 +136,14 @@ impl ColliderBits {
             .unwrap_or(false)
     }
 
+    /// Whether the bit of arena index `i` is set.
+    pub fn contains_index(&self, i: u32) -> bool {
+        let i = i as usize;
+        self.words
+            .get(i / 64)
+            .is_some_and(|w| w >> (i % 64) & 1 == 1)
+    }
+
     /// How many bits are set.
     pub fn count(&self) -> usize {
         self.words.iter().map(|w| w.count_ones() as usize).sum()

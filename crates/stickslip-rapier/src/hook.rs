@@ -217,7 +217,13 @@ impl<H> StickSlip<H> {
                         (ctx.collider1, ctx.collider2)
                     };
                     let index = |h: ColliderHandle| h.0.into_raw_parts().0;
-                    crate::contact_store::lock(&self.patches_seen).push((index(a), index(b), ours));
+                    let mut seen = crate::contact_store::lock(&self.patches_seen);
+                    let n = seen.len();
+                    if n == seen.capacity() {
+                        // Grown by 1/32, not doubled: a step's patches make the next's.
+                        crate::collider_map::reserve_slack(&mut seen, n);
+                    }
+                    seen.push((index(a), index(b), ours));
                 }
             });
     }

@@ -490,12 +490,17 @@ impl<H> StickSlip<H> {
                 woken.set(h, true);
             }
         }
+        let mut any = false;
         for i in woken.indices() {
             if let Some((c, h)) = colliders.get_unknown_gen_mut(i) {
                 c.set_active_hooks(c.active_hooks() | ActiveHooks::MODIFY_SOLVER_CONTACTS);
                 r.quiet.set(h, false);
-                r.poses.remove(h);
+                any = true;
             }
+        }
+        if any {
+            // Their poses, in one pass.
+            r.poses.retain(|i| r.quiet.contains_index(i));
         }
         r.next = woken;
         r.wake.clear();
@@ -757,6 +762,7 @@ impl<H> StickSlip<H> {
         //    213 to 111 B per contact). Flags going on are never held back.
         let r = &mut self.recycling;
         let mut off_budget = OFF_BUDGET.max(self.flagged.count() / OFF_BUDGET_SHARE);
+        let mut hooked_again = false;
         for i in self.flagged.indices() {
             // Read first: taking a collider mutably marks it modified, and rapier then
             // re-processes it (and its pairs) in the next step.
@@ -783,8 +789,12 @@ impl<H> StickSlip<H> {
                 c.set_active_hooks(c.active_hooks() - ActiveHooks::MODIFY_SOLVER_CONTACTS);
             } else {
                 c.set_active_hooks(c.active_hooks() | ActiveHooks::MODIFY_SOLVER_CONTACTS);
-                r.poses.remove(h);
+                hooked_again = true;
             }
+        }
+        if hooked_again {
+            // Their poses go, in one pass.
+            r.poses.retain(|i| next.contains_index(i));
         }
         for i in next.indices() {
             let Some((c, h)) = colliders.get_unknown_gen(i) else {
