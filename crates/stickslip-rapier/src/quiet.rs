@@ -540,13 +540,8 @@ mod tests {
     fn the_quiet_map_reads_as_a_map_of_its_poses() {
         let mut poses = QuietPoses::default();
         let mut model = std::collections::BTreeMap::new();
-        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
-        let mut next = |n: u64| {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 33) % n
-        };
+        let mut uniform = uniform_sequence(0x9E37_79B9_7F4A_7C15);
+        let mut next = |n: u64| (((uniform() * 0.5 + 0.5) * n as f32) as u64).min(n - 1);
         for round in 0..4000u32 {
             let i = next(700) as u32;
             let generation = next(3) as u32;
