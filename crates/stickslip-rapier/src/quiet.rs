@@ -113,20 +113,35 @@ impl QuietPoses {
     }
 
     pub fn insert(&mut self, handle: ColliderHandle, pose: QuietPose) {
+        self.update(handle, |_| pose);
+    }
+
+    /// Keeps `pose(kept)` for `handle`, `kept` being the pose it has (one lookup).
+    pub fn update(
+        &mut self,
+        handle: ColliderHandle,
+        pose: impl FnOnce(Option<QuietPose>) -> QuietPose,
+    ) {
         let (i, generation) = handle.0.into_raw_parts();
         if i >= MAX_INDEX {
             return;
         }
         let i = i as usize;
-        let slot = QuietSlot {
-            pose,
-            generation: generation as u8,
-        };
+        let generation = generation as u8;
         let (at, here) = self.rank(i);
         if here {
-            self.slots[at] = slot;
+            let slot = &mut self.slots[at];
+            let kept = (slot.generation == generation).then_some(slot.pose);
+            *slot = QuietSlot {
+                pose: pose(kept),
+                generation,
+            };
             return;
         }
+        let slot = QuietSlot {
+            pose: pose(None),
+            generation,
+        };
         let w = i / 64;
         if self.present.len() <= w {
             reserve_slack(&mut self.present, w);

@@ -808,11 +808,13 @@ impl<H> StickSlip<H> {
             if moving.contains(h) || !r.quiet.contains(h) {
                 // A collider that stays quiet keeps its reach (a changed shape makes rapier
                 // update its pairs unhooked, which hooks it again).
-                let (pose, reach) = match r.poses.get(h) {
-                    Some(q) => (pose_of(bodies, c), q.reach()),
-                    None => anchor(bodies, c),
-                };
-                r.poses.insert(h, QuietPose::new(&pose, reach));
+                r.poses.update(h, |kept| {
+                    let (pose, reach) = match kept {
+                        Some(q) => (pose_of(bodies, c), q.reach()),
+                        None => anchor(bodies, c),
+                    };
+                    QuietPose::new(&pose, reach)
+                });
             }
         }
         r.next = std::mem::replace(&mut r.quiet, next);
