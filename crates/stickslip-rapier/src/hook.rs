@@ -187,7 +187,7 @@ impl<H> StickSlip<H> {
         let step = self.clock.mark();
         let (c1, c2) = (ctx.collider1, ctx.collider2);
         self.store
-            .with_record(&mut user_data, &key, step, |rec, _, ours| {
+            .with_record_filed(&mut user_data, &key, step, |rec, _, ours, filed| {
                 rec.inner_user_data = inner_after;
                 if let Some(r) = ctx.rigid_mut() {
                     *r.user_data = ours;
@@ -201,7 +201,7 @@ impl<H> StickSlip<H> {
                         *m.friction = rec.state.limit;
                     }
                 } else {
-                    let measured = patch.then(|| self.patches_measured.get(ours)).flatten();
+                    let measured = patch.then(|| self.patches_measured.get(filed)).flatten();
                     self.apply(ctx, rec, measured.as_ref());
                 }
                 if patch {
