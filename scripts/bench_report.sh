@@ -67,7 +67,7 @@ bench_s=$((t2 - t1))
     --criterion "$CRITERION_HOME" \
     --threads-json "$work/threads.json" \
     --profile docs/bench-profile.md \
-    --note "Build (bench + report binaries, incremental): $build_s s; criterion benches and their extra pass: $bench_s s$([[ $full == 1 ]] && echo ', ~100k-contact plane included' || echo ', ~100k-contact plane skipped (--quick)')." \
+    --note "Build (bench + report binaries): $build_s s; criterion benches and their extra pass: $bench_s s$([[ $full == 1 ]] && echo ', ~100k-contact plane included' || echo ', ~100k-contact plane skipped (--quick)')." \
     --out "$out"
 # The avian add-on's step cost beside plain avian (its own package: avian and bevy stay out of
 # stickslip-benches), appended as its own section.

@@ -33,7 +33,10 @@ fn is_resting(scene: &str) -> bool {
 }
 /// The variants that carry the step-time target (EP, and EP with vibration in either mode).
 const TIMED_VARIANTS: [&str; 3] = ["ep", "ep_vib_resolved", "ep_vib_averaged"];
-/// Target: spread of the cost per contact from 1k to 100k contacts.
+/// Target: how far stickslip's own cost per contact (EP − no-op hook) may move from 1k to
+/// 100k contacts, as a share of plain rapier's cost per contact in the smallest world. (Its
+/// own max/min spread means nothing once that cost is near zero, or below zero where
+/// recycling makes EP cheaper than the hook.)
 const FLAT_TARGET: f64 = 0.20;
 /// Target: bytes of friction state per active contact.
 const BYTES_TARGET: f64 = 64.0;
@@ -422,32 +425,46 @@ pub fn section(md: &mut String, summary: &mut Summary, opts: &Options) -> Result
         };
         let ep_spread = spread(&|s| s.3);
         let plain_spread = spread(&|s| s.1);
-        let extra_spread = spread(&|s| s.3 - s.2);
+        // stickslip's own part: how far it moves over the sizes, in ns per contact and as a
+        // share of plain rapier's cost per contact in the smallest world.
+        let own: Vec<f64> = scaling.iter().map(|s| s.3 - s.2).collect();
+        let own_lo = own.iter().cloned().fold(f64::INFINITY, f64::min);
+        let own_hi = own.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+        let own_moves = own_hi - own_lo;
+        let plain_first = scaling.first().map_or(f64::NAN, |s| s.1);
+        let own_share = own_moves / plain_first;
         let range = format!(
             "{}–{} points",
             scaling.first().map_or(0, |s| s.0),
             scaling.last().map_or(0, |s| s.0)
         );
+        let first_points = scaling.first().map_or(0, |s| s.0);
         let _ = writeln!(
             md,
-            "Spread of the cost per contact (max/min − 1) over {range}: EP {}, plain rapier {}, \
-             stickslip's own part (EP − no-op hook) {}.\n",
+            "Spread of the cost per contact (max/min − 1) over {range}: EP {}, plain rapier {}. \
+             stickslip's own part (EP − no-op hook) moves by {} ns per contact over them \
+             ({} to {} ns), {} of plain rapier's {} ns per contact at {first_points} points.\n",
             table::upct(ep_spread),
             table::upct(plain_spread),
-            table::upct(extra_spread)
+            num(own_moves, 3),
+            num(own_lo, 3),
+            num(own_hi, 3),
+            table::upct(own_share),
+            num(plain_first, 3),
         );
         let full = scaling.last().is_some_and(|s| s.0 >= 50_000);
         summary.add(
             format!("stickslip's own cost per contact (EP − no-op) flat, {range}"),
-            "within 20 %",
+            "moves by ≤ 20 % of plain rapier's cost per contact",
             format!(
-                "spread {} (EP {}, plain rapier {}){}",
-                table::upct(extra_spread),
+                "moves by {} ({} ns; EP spread {}, plain rapier {}){}",
+                table::upct(own_share),
+                num(own_moves, 3),
                 table::upct(ep_spread),
                 table::upct(plain_spread),
                 if full { "" } else { "; 100k not run" }
             ),
-            extra_spread <= FLAT_TARGET && full,
+            own_share <= FLAT_TARGET && full,
         );
     } else {
         md.push_str("Not measured (needs the plane scenes).\n\n");
