@@ -90,6 +90,16 @@ pub(crate) fn reserve_slack<T>(v: &mut Vec<T>, i: usize) {
     }
 }
 
+/// Pushes `x`, growing `v` by 1/32 when it is full, not doubling it: buffers refilled every
+/// step to about the last step's length (the contact patches seen and measured).
+pub(crate) fn push_slack<T>(v: &mut Vec<T>, x: T) {
+    let n = v.len();
+    if n == v.capacity() {
+        reserve_slack(v, n);
+    }
+    v.push(x);
+}
+
 /// A set of colliders as one bit per arena index (the pile of 10 000 attached boxes costs
 /// 1.25 kB, not 80). Generations are not kept: callers give the live handle, and a collider is
 /// detached before it is removed (or its bits apply to the next collider reusing its index).

@@ -303,6 +303,11 @@ pub(crate) struct ContactStore {
     free_floor: AtomicU32,
 }
 
+/// The lowest free slot of a free list (`u32::MAX` if none): the store's `free_floor`.
+fn lowest(free: &BinaryHeap<Reverse<u32>>) -> u32 {
+    free.peek().map_or(u32::MAX, |r| r.0)
+}
+
 /// A store sweeps before its next regular sweep once it has created this share of its
 /// slots since the last one (see [`ContactStore::churned`]).
 const CHURN_SHARE: usize = 16;
@@ -494,8 +499,7 @@ impl ContactStore {
         let to = free.peek().map(|r| r.0).filter(|&to| to < index);
         let target = to.and_then(|to| slots.get(to as usize));
         let (Some(to), Some(target)) = (to, target) else {
-            self.free_floor
-                .store(free.peek().map_or(u32::MAX, |r| r.0), Ordering::Relaxed);
+            self.free_floor.store(lowest(&free), Ordering::Relaxed);
             return None;
         };
         free.pop();
@@ -507,8 +511,7 @@ impl ContactStore {
         };
         d.meta &= !(LIVE | KEYED);
         free.push(Reverse(index));
-        self.free_floor
-            .store(free.peek().map_or(u32::MAX, |r| r.0), Ordering::Relaxed);
+        self.free_floor.store(lowest(&free), Ordering::Relaxed);
         drop(free);
         if let Some(by_key) = by_key.as_mut() {
             by_key.insert(*key, to);
@@ -575,8 +578,7 @@ impl ContactStore {
         let popped = {
             let mut free = lock(&self.free);
             let popped = free.pop();
-            self.free_floor
-                .store(free.peek().map_or(u32::MAX, |r| r.0), Ordering::Relaxed);
+            self.free_floor.store(lowest(&free), Ordering::Relaxed);
             popped
         };
         let index = match popped {
@@ -584,9 +586,8 @@ impl ContactStore {
             None => {
                 if slots.len() == slots.capacity() {
                     // Grow by 1/32, at least 16 slots: the slack stays small (memory per
-                    // contact: the rolling bench's 400 contacts sat in 448 slots, 4 B more a
-                    // contact, with at least 64), the
-                    // copies amortized.
+                    // contact; with at least 64 the rolling bench's 400 contacts sat in 448
+                    // slots, 4 B more a contact), the copies amortized.
                     let more = (slots.len() / 32).max(16);
                     slots.reserve_exact(more);
                 }
@@ -705,7 +706,7 @@ impl ContactStore {
         inner.retain(|i, _| live(*i));
         self.shrink();
         let free = self.free.get_mut().unwrap_or_else(|e| e.into_inner());
-        *self.free_floor.get_mut() = free.peek().map_or(u32::MAX, |r| r.0);
+        *self.free_floor.get_mut() = lowest(free);
     }
 
     /// Gives memory back once it is well beyond what is live (with hysteresis: no churn of
@@ -911,7 +912,7 @@ impl ContactStore {
                 return Err("key map: a key is listed twice".into());
             }
         }
-        let floor = free.peek().map_or(u32::MAX, |r: &Reverse<u32>| r.0);
+        let floor = lowest(&free);
         Ok(ContactStore {
             slots: RwLock::new(slots),
             by_key: Mutex::new(by_key),

@@ -217,13 +217,10 @@ impl<H> StickSlip<H> {
                         (ctx.collider1, ctx.collider2)
                     };
                     let index = |h: ColliderHandle| h.0.into_raw_parts().0;
-                    let mut seen = crate::contact_store::lock(&self.patches_seen);
-                    let n = seen.len();
-                    if n == seen.capacity() {
-                        // Grown by 1/32, not doubled: a step's patches make the next's.
-                        crate::collider_map::reserve_slack(&mut seen, n);
-                    }
-                    seen.push((index(a), index(b), ours));
+                    crate::collider_map::push_slack(
+                        &mut crate::contact_store::lock(&self.patches_seen),
+                        (index(a), index(b), ours),
+                    );
                 }
             });
     }

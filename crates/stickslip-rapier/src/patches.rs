@@ -57,14 +57,7 @@ impl PatchMeasures {
         };
         match self.find_sealed(user_data) {
             Some(at) => self.entries[at] = entry,
-            None => {
-                let n = self.entries.len();
-                if n == self.entries.capacity() {
-                    // Grown by 1/32, not doubled: a step's patches make the next's.
-                    crate::collider_map::reserve_slack(&mut self.entries, n);
-                }
-                self.entries.push(entry);
-            }
+            None => crate::collider_map::push_slack(&mut self.entries, entry),
         }
     }
 
