@@ -19,7 +19,10 @@
 //! belt alone. A world saved while
 //! contacts are recycled,
 //! and piles on a heightfield and on a compound ground (composite contact patches, recycled or
-//! not), resume bit for bit. In 3D and in 2D (stickslip-fixtures2d: the platform carries
+//! not), resume bit for bit. With rapier's `parallel` feature, the pass after each step that
+//! decides which contacts recycle (and steps them ahead) runs on rayon's threads and decides
+//! the same on one thread as on two: the same stacks, sliding and settling, and the
+//! composite piles step bit for bit alike on pools of both sizes. In 3D and in 2D (stickslip-fixtures2d: the platform carries
 //! along x, the stacks stand in a row; the composite grounds are 3D).
 
 use stickslip_core::law::Law;
@@ -551,6 +554,25 @@ fn a_recycled_contact_holds_or_slides_after_a_jump_in_load_as_a_hooked_one() {
     }
 }
 
+/// A copy of `world` and `m`, through a snapshot.
+fn copy(world: &PhysicsWorld, m: &StickSlip) -> (PhysicsWorld, StickSlip) {
+    let mut bytes = Vec::new();
+    WorldSnapshot::save_from(world, m, &mut bytes).unwrap();
+    WorldSnapshot::load(bytes.as_slice())
+        .unwrap()
+        .restore(())
+        .unwrap()
+}
+
+/// How many of the world's colliders `m` lets rapier recycle.
+fn recycled(world: &PhysicsWorld, m: &StickSlip) -> usize {
+    world
+        .colliders
+        .iter()
+        .filter(|(h, _)| m.is_recycled(*h))
+        .count()
+}
+
 /// Runs `world` with `m` for `before` steps, saves both, resumes, and compares the two runs
 /// bit for bit over `after` steps, with `event` applied to both worlds at step `event_at`
 /// after the snapshot. Returns how many attached colliders were recycled at the snapshot.
@@ -565,17 +587,8 @@ fn resumes_bit_identically(
     for _ in 0..before {
         m.step(&mut world);
     }
-    let recycled = world
-        .colliders
-        .iter()
-        .filter(|(h, _)| m.is_recycled(*h))
-        .count();
-    let mut bytes = Vec::new();
-    WorldSnapshot::save_from(&world, &m, &mut bytes).unwrap();
-    let (mut w2, mut m2) = WorldSnapshot::load(bytes.as_slice())
-        .unwrap()
-        .restore(())
-        .unwrap();
+    let recycled = recycled(&world, &m);
+    let (mut w2, mut m2) = copy(&world, &m);
     for k in 0..after {
         if k == event_at {
             event(&mut world);
@@ -594,12 +607,21 @@ fn resumes_bit_identically(
 /// 36 stacks of two 0.5 m boxes (friction μ_ba, moving at `v`) on the ground already in
 /// `world`, every collider attached.
 fn stacks_on(world: &mut PhysicsWorld, v: Vector) -> StickSlip {
-    for i in 0..36 {
-        // A 6 × 6 grid; in 2D a row.
+    stacks_of(world, v, 6)
+}
+
+/// [`stacks_on`] with `side` × `side` stacks (in 2D, a row of `side`² stacks).
+fn stacks_of(world: &mut PhysicsWorld, v: Vector, side: usize) -> StickSlip {
+    let n = side * side;
+    for i in 0..n {
+        // A grid; in 2D a row.
         #[cfg(not(dim2))]
-        let (x, z) = (1.2 * ((i % 6) as f32 - 2.5), 1.2 * ((i / 6) as f32 - 2.5));
+        let (x, z) = {
+            let mid = |k: usize| k as f32 - (side as f32 - 1.0) / 2.0;
+            (1.2 * mid(i % side), 1.2 * mid(i / side))
+        };
         #[cfg(dim2)]
-        let (x, z) = (0.6 * (i as f32 - 17.5), 0.0);
+        let (x, z) = (0.6 * (i as f32 - (n as f32 - 1.0) / 2.0), 0.0);
         for level in 0..2 {
             world.insert(
                 RigidBodyBuilder::dynamic()
@@ -684,5 +706,57 @@ fn piles_on_a_heightfield_and_a_compound_resume_bit_identically() {
         // Saved once settled, then tilted past break-away.
         let recycled = resumes_bit_identically(world, m, 180, 120, 30, |w| set_slope(w, 0.7));
         println!("{ground:?}: {recycled} colliders recycled at the later snapshot");
+    }
+}
+
+/// Steps `world` with `m` on a rayon pool of one thread and a copy on a pool of two, and
+/// compares the two bit for bit at every step (rapier's own parallel steps are alike on both
+/// pools; stickslip's pass after the step must be too, whichever thread judges a pair).
+/// Returns the most attached colliders recycled at once.
+#[cfg(feature = "parallel")]
+fn one_thread_as_two(world: PhysicsWorld, m: StickSlip, steps: usize, tilt_at: usize) -> usize {
+    let (mut w2, mut m2) = copy(&world, &m);
+    let (mut w1, mut m1) = (world, m);
+    let pool = |n| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build()
+            .unwrap()
+    };
+    let (one, two) = (pool(1), pool(2));
+    let mut most = 0;
+    for k in 0..steps {
+        if k == tilt_at {
+            set_slope(&mut w1, 0.7);
+            set_slope(&mut w2, 0.7);
+        }
+        one.install(|| m1.step(&mut w1));
+        two.install(|| m2.step(&mut w2));
+        assert!(
+            world_bits(&w1) == world_bits(&w2),
+            "one thread and two diverged at step {k}"
+        );
+        let r = recycled(&w1, &m1);
+        assert_eq!(r, recycled(&w2, &m2), "recycled sets differ at step {k}");
+        most = most.max(r);
+    }
+    most
+}
+
+#[cfg(feature = "parallel")]
+#[test]
+fn the_pass_after_the_step_decides_alike_on_one_thread_and_on_two() {
+    // 144 stacks: hundreds of pairs, more than a thread takes at a time.
+    let mut world = PhysicsWorld::default();
+    world.insert_collider(cuboid3(50.0, 0.5, 10.0).0.friction(MU_BA as f32), None);
+    let m = stacks_of(&mut world, Vector::ZERO, 12);
+    // Settling (recycling), then tilted past break-away: hooked again, sliding.
+    let most = one_thread_as_two(world, m, 240, 150);
+    assert!(most >= 240, "only {most} colliders recycled");
+    #[cfg(not(dim2))]
+    for ground in [Ground::HeightField, Ground::Compound] {
+        let (world, m) = pile_on(ground);
+        let most = one_thread_as_two(world, m, 240, 180);
+        println!("{ground:?}: at most {most} colliders recycled");
     }
 }

@@ -222,11 +222,6 @@ impl Slot {
     fn set_meta(&mut self, meta: u16) {
         self.0.get_mut().meta = meta;
     }
-
-    fn record(&mut self) -> ContactRecord {
-        let d = *self.0.get_mut();
-        unpack(&d.packed, d.slip_speed, d.meta)
-    }
 }
 
 fn unpack(p: &Packed, slip: u16, meta: u16) -> ContactRecord {
@@ -358,6 +353,50 @@ pub(crate) struct StoreImage {
     pub next_generation: u8,
     /// Records created since the last sweep.
     pub created: u32,
+}
+
+/// The records of a [`ContactStore`] borrowed for a pass over many of them at once
+/// (`recycle`'s step ahead of recycled manifolds), which may run on several threads: each
+/// record is reached by one thread, and its slot's lock is held only to copy it in and out.
+pub(crate) struct Records<'a> {
+    slots: &'a [Slot],
+}
+
+impl Records<'_> {
+    /// The live record `user_data` points at, if it belongs to the pair `(c1, c2)`; marks it
+    /// alive at `step` (a sleeping manifold keeps its state while rapier keeps the manifold).
+    pub fn touch(
+        &self,
+        user_data: u32,
+        c1: ColliderHandle,
+        c2: ColliderHandle,
+        step: u32,
+    ) -> Option<ContactRecord> {
+        self.update(user_data, c1, c2, step, |rec| *rec)
+    }
+
+    /// Runs `f` on the live record `user_data` points at, if it belongs to the pair
+    /// `(c1, c2)`, stores it back and marks it alive at `step` (a recycled manifold, which
+    /// the hook does not see; see `recycle`).
+    pub fn update<R>(
+        &self,
+        user_data: u32,
+        c1: ColliderHandle,
+        c2: ColliderHandle,
+        step: u32,
+        f: impl FnOnce(&mut ContactRecord) -> R,
+    ) -> Option<R> {
+        let (index, generation) = decode(user_data)?;
+        let mut d = self.slots.get(index as usize)?.0.lock();
+        if !fits(&d, index_of(c1), index_of(c2), Some(generation)) {
+            return None;
+        }
+        let mut rec = unpack(&d.packed, d.slip_speed, d.meta);
+        let out = f(&mut rec);
+        (d.packed, d.slip_speed) = pack(&rec, d.packed.pair);
+        d.meta = (with_state(d.meta, &rec) & !TOUCHED) | parity(step);
+        Some(out)
+    }
 }
 
 impl ContactStore {
@@ -740,53 +779,11 @@ impl ContactStore {
         });
     }
 
-    /// The live record `user_data` points at, if it belongs to the pair `(c1, c2)`; marks it
-    /// alive at `step` (a sleeping manifold keeps its state while rapier keeps the manifold).
-    pub fn touch(
-        &mut self,
-        user_data: u32,
-        c1: ColliderHandle,
-        c2: ColliderHandle,
-        step: u32,
-    ) -> Option<ContactRecord> {
-        let (index, generation) = decode(user_data)?;
-        let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
-        let slot = slots.get_mut(index as usize)?;
-        let meta = slot.meta();
-        let p = slot.data().packed;
-        let ok = meta & LIVE != 0
-            && generation_of(meta) == generation
-            && p.c1() == index_of(c1)
-            && p.c2() == index_of(c2);
-        if !ok {
-            return None;
+    /// The records, for a pass that steps many of them at once (see [`Records`]).
+    pub fn records(&mut self) -> Records<'_> {
+        Records {
+            slots: self.slots.get_mut().unwrap_or_else(|e| e.into_inner()),
         }
-        slot.set_meta((meta & !TOUCHED) | parity(step));
-        Some(slot.record())
-    }
-
-    /// Runs `f` on the live record `user_data` points at, if it belongs to the pair
-    /// `(c1, c2)`, stores it back and marks it alive at `step` (a recycled manifold, which
-    /// the hook does not see; see `recycle`).
-    pub fn update<R>(
-        &mut self,
-        user_data: u32,
-        c1: ColliderHandle,
-        c2: ColliderHandle,
-        step: u32,
-        f: impl FnOnce(&mut ContactRecord) -> R,
-    ) -> Option<R> {
-        let (index, generation) = decode(user_data)?;
-        let slots = self.slots.get_mut().unwrap_or_else(|e| e.into_inner());
-        let d = slots.get_mut(index as usize)?.data();
-        if !fits(d, index_of(c1), index_of(c2), Some(generation)) {
-            return None;
-        }
-        let mut rec = unpack(&d.packed, d.slip_speed, d.meta);
-        let out = f(&mut rec);
-        (d.packed, d.slip_speed) = pack(&rec, d.packed.pair);
-        d.meta = (with_state(d.meta, &rec) & !TOUCHED) | parity(step);
-        Some(out)
     }
 
     /// Number of live records.
@@ -1073,11 +1070,14 @@ mod tests {
             // The old user_data is stale: it reaches no record.
             let k = key(i as u32, 5000);
             assert!(
-                store.update(before, k.c1, k.c2, 3, |_| ()).is_none(),
+                store
+                    .records()
+                    .update(before, k.c1, k.c2, 3, |_| ())
+                    .is_none(),
                 "record {i}"
             );
             assert!(
-                store.update(now, k.c1, k.c2, 3, |_| ()).is_some(),
+                store.records().update(now, k.c1, k.c2, 3, |_| ()).is_some(),
                 "record {i}"
             );
         }

@@ -677,12 +677,12 @@ impl<H> StickSlip<H> {
             dissipated_energy: self.totals.dissipated_energy,
             ..WorldTotals::default()
         };
+        let records = self.store.records();
         for pair in narrow_phase.contact_pairs() {
             for m in pair.solver_manifolds() {
                 // Marks the record alive (a sleeping pair's manifold keeps its state).
                 let Some(rec) =
-                    self.store
-                        .touch(m.data.user_data, pair.collider1, pair.collider2, mark)
+                    records.touch(m.data.user_data, pair.collider1, pair.collider2, mark)
                 else {
                     continue;
                 };

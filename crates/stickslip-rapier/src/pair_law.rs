@@ -110,7 +110,7 @@ impl PairLaws {
         crate::heap::vec_bytes(&self.palette.0)
             + self.materials.heap_bytes()
             + crate::heap::map_bytes(&self.pairs)
-            + crate::heap::map_bytes(&self.combined.read())
+            + self.combined.heap_bytes()
     }
 
     /// Laws whose attached colliders default to `default`.
@@ -297,13 +297,14 @@ impl PairLaws {
         } else {
             (s2, s1, rule)
         };
+        let shard = self.combined.shard();
         {
-            let cache = self.combined.read();
+            let cache = shard.read();
             if let Some(law) = cache.get(&key) {
                 return f(law);
             }
         }
-        let mut cache = self.combined.write();
+        let mut cache = shard.write();
         if cache.len() >= MAX_COMBINATIONS && !cache.contains_key(&key) {
             cache.clear();
         }
@@ -326,8 +327,43 @@ impl PairLaws {
     }
 }
 
-/// The combination cache (see the module docs).
-pub(crate) type Combined = parking_lot::RwLock<HashMap<CombineKey, Law>>;
+/// Shards of the combination cache: one per thread up to this many.
+const SHARDS: usize = 8;
+
+/// The combination cache (see the module docs), one copy per thread (up to [`SHARDS`],
+/// filled as each thread meets a combination): a read lock writes its count of readers, so
+/// threads that read one lock for every contact they step (the hook in rapier's parallel
+/// narrow phase, the pass after the step) would pass its cache line between cores. A
+/// combination's law depends on its key alone, so the copies agree.
+#[derive(Debug, Default)]
+pub(crate) struct Combined {
+    shards: [Shard; SHARDS],
+}
+
+/// A copy of the cache, on a cache line of its own.
+#[derive(Debug, Default)]
+#[repr(align(128))]
+struct Shard(parking_lot::RwLock<HashMap<CombineKey, Law>>);
+
+impl Combined {
+    /// The running thread's copy.
+    fn shard(&self) -> &parking_lot::RwLock<HashMap<CombineKey, Law>> {
+        use std::sync::atomic::{AtomicUsize, Ordering};
+        static NEXT: AtomicUsize = AtomicUsize::new(0);
+        thread_local! {
+            static SHARD: usize = NEXT.fetch_add(1, Ordering::Relaxed) % SHARDS;
+        }
+        &self.shards[SHARD.with(|s| *s)].0
+    }
+
+    /// Heap bytes held (capacity included) by every copy.
+    fn heap_bytes(&self) -> usize {
+        self.shards
+            .iter()
+            .map(|s| crate::heap::map_bytes(&s.0.read()))
+            .sum()
+    }
+}
 
 /// Per-pair overrides.
 pub(crate) type PairMaterials = HashMap<(ColliderHandle, ColliderHandle), FrictionMaterial>;

@@ -41,6 +41,12 @@ pub(crate) struct Recycling {
     pub moving: ColliderBits,
     /// Scratch: colliders with a touching pair found quiet in the step.
     pub carried: ColliderBits,
+    /// Scratch: attached colliders hooked at every step (a source or a moving surface on
+    /// them), found once per step.
+    pub always: ColliderBits,
+    /// Scratch: what the pass over the contact pairs found, one list per part of the pairs
+    /// (see `recycle::judge_pairs`).
+    pub findings: Vec<Vec<crate::recycle::Finding>>,
 }
 
 impl Recycling {
@@ -53,12 +59,19 @@ impl Recycling {
             &self.still,
             &self.moving,
             &self.carried,
+            &self.always,
         ]
         .iter()
         .map(|b| b.heap_bytes())
         .sum::<usize>()
             + self.poses.heap_bytes()
             + self.active.heap_bytes()
+            + crate::heap::vec_bytes(&self.findings)
+            + self
+                .findings
+                .iter()
+                .map(crate::heap::vec_bytes)
+                .sum::<usize>()
     }
 
     /// Colliders whose contacts must be hooked at the next step.

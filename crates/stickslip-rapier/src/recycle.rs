@@ -93,10 +93,24 @@
 //! as they are: rapier does not update them.
 //!
 //! With `contact_recycling` off, or a pause (dt = 0), every flag stays on.
+//!
+//! ## On several threads
+//! With rapier's `parallel` feature the pass after each step runs on rayon's threads (the
+//! pool the step runs in): each thread takes batches of contact pairs from rapier's list and
+//! judges them against the candidates found before the pass (the colliders that may go
+//! quiet), stepping ahead the records of the pairs it finds quiet (a record is one pair's:
+//! no two threads touch it). A pair with several touching manifolds or a composite shape is
+//! left to the serial pass after it (their measurements go to one map). That serial pass
+//! takes the findings in the order of rapier's list: a pair found not quiet hooks its
+//! colliders again unless a pair before it already hooked one of them. So the flags are
+//! those one thread going down the list sets; the one difference is that a pair hooked by an
+//! earlier one has had its next step done ahead, which the hook then writes (as for any
+//! collider hooked again after the pass). One thread and two decide the same, bit for bit
+//! (`crates/stickslip-fixtures/tests/rapier_recycling.rs`).
 
 use crate::collider_map::ColliderBits;
 use crate::contact_store::is_composite;
-use crate::contact_store::{ContactRecord, ContactStore};
+use crate::contact_store::{ContactRecord, Records};
 use crate::hook::inv_mass;
 use crate::measure::{Measured, measure, point_velocity, world_centroid};
 use crate::modifier::StickSlip;
@@ -205,14 +219,14 @@ fn unloaded_at_rest(law: &stickslip_core::law::Law, relative: Vector, dt: f64) -
 /// `user_data`, pair and the step's mark), and a composite patch's measurement for the next
 /// hooked step.
 fn commit_ahead(
-    store: &mut ContactStore,
+    records: &Records,
     patches: Option<&mut crate::patches::PatchMeasures>,
     (user_data, c1, c2, mark): (u32, ColliderHandle, ColliderHandle, u32),
     mut rec: ContactRecord,
     meas: Option<Measured>,
 ) {
     rec.ahead = true;
-    store.update(user_data, c1, c2, mark, |r| *r = rec);
+    records.update(user_data, c1, c2, mark, |r| *r = rec);
     if let (Some(patches), Some(meas)) = (patches, meas) {
         patches.insert(user_data, meas);
     }
@@ -310,6 +324,369 @@ fn is_still(
         .and_then(|c| c.parent())
         .and_then(|b| bodies.get(b))
         .is_none_or(|b| b.is_fixed() || (or_asleep && b.is_sleeping()))
+}
+
+/// The attached colliders of a pair whose flag keeps the pair hooked: those of moving
+/// bodies, or every attached one if none moves (both, not one: which one would depend on the
+/// order rapier gives the pair in). `always`: whether stickslip hooks a collider at every
+/// step.
+fn hook_sides(
+    attached: &ColliderBits,
+    always: impl Fn(ColliderHandle) -> bool,
+    bodies: &RigidBodySet,
+    colliders: &ColliderSet,
+    (c1, c2): (ColliderHandle, ColliderHandle),
+) -> impl Iterator<Item = ColliderHandle> {
+    let (a1, a2) = (attached.contains(c1), attached.contains(c2));
+    // A side that is hooked at every step (a vibration source or a moving surface on it)
+    // keeps the pair hooked alone: flagging the other would only take the recycling of that
+    // collider's other pairs (the boxes on a vibrating plate).
+    let (a1, a2) = if always(c1) || always(c2) {
+        (false, false)
+    } else {
+        (a1, a2)
+    };
+    let (m1, m2) = (
+        a1 && !is_still(bodies, colliders, c1, false),
+        a2 && !is_still(bodies, colliders, c2, false),
+    );
+    let (k1, k2) = if m1 || m2 { (m1, m2) } else { (a1, a2) };
+    [(c1, k1), (c2, k2)]
+        .into_iter()
+        .filter_map(|(h, keep)| keep.then_some(h))
+}
+
+/// What the pass over the contact pairs after a step found for one (see
+/// `StickSlip::settle_after_step`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Judged {
+    /// Nothing to do: hooked, or quiet without a collider that moves.
+    Quiet,
+    /// Quiet and touching, with a collider that moves: its colliders ride on the pair.
+    Rides,
+    /// Not quiet (or filtered by the user): its colliders are hooked again.
+    NotQuiet,
+    /// Hooked or still, and touching a collider hooked at every step, on which its first,
+    /// its second collider rests.
+    Carries(bool, bool),
+    /// Left to the serial pass: several touching manifolds, or a composite shape (their
+    /// measurements are filed in a map).
+    Left,
+}
+
+/// A contact pair, by its place in rapier's list of pairs, and what was found for it.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Finding {
+    pair: u32,
+    what: Judged,
+}
+
+/// Contact pairs a thread of the pass takes from rapier's list at a time.
+const BATCH: usize = 128;
+
+/// Most parts (threads) of the pass.
+const MAX_PARTS: usize = 64;
+
+/// Judges every contact pair (steps 2 and 3 of `StickSlip::settle_after_step`) into
+/// `findings`, one list per part, each in the order of rapier's list of pairs; with the
+/// `parallel` feature a part runs on each of rayon's threads, taking batches of pairs from
+/// the list as it goes (so the work is shared however its cost spreads over the list). A
+/// pair's finding depends on the pair and the candidates in `next` alone, not on the part or
+/// the thread that judged it.
+fn judge_pairs(
+    judge: &Judge,
+    records: &Records,
+    narrow_phase: &NarrowPhase,
+    next: &ColliderBits,
+    findings: &mut Vec<Vec<Finding>>,
+) {
+    let pairs = std::sync::Mutex::new(narrow_phase.contact_pairs().enumerate());
+    let judge_part = |out: &mut Vec<Finding>| {
+        out.clear();
+        let mut batch = [None; BATCH];
+        loop {
+            let taken = {
+                let mut pairs = crate::contact_store::lock(&pairs);
+                batch
+                    .iter_mut()
+                    .map_while(|slot| {
+                        *slot = pairs.next();
+                        slot.is_some().then_some(())
+                    })
+                    .count()
+            };
+            if taken == 0 {
+                break;
+            }
+            for &(i, pair) in batch[..taken].iter().flatten() {
+                let what = judge.pair(pair, next, records, None);
+                if what != Judged::Quiet {
+                    let pair = u32::try_from(i).unwrap_or(u32::MAX);
+                    out.push(Finding { pair, what });
+                }
+            }
+        }
+    };
+    #[cfg(feature = "parallel")]
+    let parts = rayon::current_num_threads().clamp(1, MAX_PARTS);
+    #[cfg(not(feature = "parallel"))]
+    let parts = 1;
+    // Parts are kept (with their memory) when fewer are needed.
+    if findings.len() < parts {
+        findings.resize_with(parts, Vec::new);
+    }
+    for out in &mut findings[parts..] {
+        out.clear();
+    }
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        findings[..parts].par_iter_mut().for_each(judge_part);
+    }
+    #[cfg(not(feature = "parallel"))]
+    judge_part(&mut findings[0]);
+}
+
+/// The findings of every part, merged in the order of rapier's list of pairs.
+struct InOrder<'a> {
+    parts: &'a [Vec<Finding>],
+    at: [usize; MAX_PARTS],
+}
+
+impl<'a> InOrder<'a> {
+    fn new(parts: &'a [Vec<Finding>]) -> Self {
+        InOrder {
+            parts: &parts[..parts.len().min(MAX_PARTS)],
+            at: [0; MAX_PARTS],
+        }
+    }
+}
+
+impl Iterator for InOrder<'_> {
+    type Item = Finding;
+
+    fn next(&mut self) -> Option<Finding> {
+        let (k, f) = self
+            .parts
+            .iter()
+            .enumerate()
+            .filter_map(|(k, part)| part.get(self.at[k]).map(|f| (k, *f)))
+            .min_by_key(|(_, f)| f.pair)?;
+        self.at[k] += 1;
+        Some(f)
+    }
+}
+
+/// What judging a contact pair after a step reads (all of it shared by the threads of the
+/// pass): the hook's next step, the candidates to go quiet and the colliders' motion.
+struct Judge<'a> {
+    ahead: Ahead<'a>,
+    attached: &'a ColliderBits,
+    flagged: &'a ColliderBits,
+    /// Colliders stickslip hooks at every step.
+    always: &'a ColliderBits,
+    still: &'a ColliderBits,
+    moving: &'a ColliderBits,
+    bodies: &'a RigidBodySet,
+    colliders: &'a ColliderSet,
+    clustering: bool,
+    step_limit: f32,
+    prediction: f32,
+    mark: u32,
+}
+
+impl Judge<'_> {
+    /// Whether the pair is hooked at the next step with the quiet set `next`.
+    fn hooked(&self, pair: &ContactPair, next: &ColliderBits) -> bool {
+        let (c1, c2) = (pair.collider1, pair.collider2);
+        let (a1, a2) = (self.attached.contains(c1), self.attached.contains(c2));
+        !(a1 || a2) || self.hooked_next(c1, a1, next) || self.hooked_next(c2, a2, next)
+    }
+
+    fn hooked_next(&self, h: ColliderHandle, attached: bool, next: &ColliderBits) -> bool {
+        if attached && self.flagged.contains(h) {
+            !next.contains(h)
+        } else {
+            self.colliders.get(h).is_some_and(|c| {
+                c.active_hooks()
+                    .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
+            })
+        }
+    }
+
+    fn is_still_now(&self, h: ColliderHandle) -> bool {
+        if self.flagged.contains(h) {
+            self.still.contains(h)
+        } else {
+            is_still(self.bodies, self.colliders, h, true)
+        }
+    }
+
+    fn moves(&self, h: ColliderHandle) -> bool {
+        if self.flagged.contains(h) {
+            self.moving.contains(h)
+        } else {
+            self.colliders.get(h).is_some_and(|c| {
+                let (_, reach) = anchor(self.bodies, c);
+                step_motion(self.bodies, c, reach, self.ahead.dt as f32) > self.step_limit
+            })
+        }
+    }
+
+    /// The attached colliders of the pair whose flag keeps it hooked (see [`hook_sides`]).
+    fn sides_to_hook(
+        &self,
+        c1: ColliderHandle,
+        c2: ColliderHandle,
+    ) -> impl Iterator<Item = ColliderHandle> {
+        let always = |h| self.always.contains(h);
+        hook_sides(self.attached, always, self.bodies, self.colliders, (c1, c2))
+    }
+
+    /// Judges a pair with the quiet set `next` and steps ahead the records of its manifolds
+    /// if they are quiet. Without `patches` (the parallel pass), a pair with several touching
+    /// manifolds or a composite shape is [`Judged::Left`] untouched.
+    fn pair(
+        &self,
+        pair: &ContactPair,
+        next: &ColliderBits,
+        records: &Records,
+        patches: Option<&mut crate::patches::PatchMeasures>,
+    ) -> Judged {
+        let (bodies, colliders, mark) = (self.bodies, self.colliders, self.mark);
+        let (c1, c2) = (pair.collider1, pair.collider2);
+        let (a1, a2) = (self.attached.contains(c1), self.attached.contains(c2));
+        let hooked = self.hooked(pair, next);
+        // A pair the user filters (a filter flag on an unattached collider) is updated in full
+        // at every step, also once its bodies sleep and are woken: it stays hooked.
+        // (A candidate still to go quiet had none in 1.: only the other colliders are looked
+        // up, which spares the pile's resting pairs two reads of the arena.)
+        let filtered = !hooked
+            && [(c1, a1), (c2, a2)].into_iter().any(|(h, attached)| {
+                !(attached && self.flagged.contains(h) && next.contains(h))
+                    && colliders.get(h).is_some_and(|c| !user_bits(c).is_empty())
+            });
+        if filtered {
+            return Judged::NotQuiet;
+        }
+        let touches = || {
+            pair.solver_manifolds()
+                .iter()
+                .any(|m| !m.data.solver_contacts.is_empty())
+        };
+        if hooked || (self.is_still_now(c1) && self.is_still_now(c2)) {
+            // A collider touching one hooked at every step (a vibrating plate, a belt) rests
+            // on it: it is not in flight.
+            let first = self.always.contains(c2) && touches();
+            let second = self.always.contains(c1) && touches();
+            return if first || second {
+                Judged::Carries(first, second)
+            } else {
+                Judged::Quiet
+            };
+        }
+        let pair_moves = self.moves(c1) || self.moves(c2);
+        // Rapier's own full update of a pair that moves writes the pair's combined friction
+        // coefficient and no target velocity.
+        let own = pair_moves.then(|| rapiers_own(colliders, c1, c2)).flatten();
+        // The touching manifolds must each be written the same by the hook's next step (and,
+        // for a pair that moves, by rapier's own full update).
+        let keeps = |rec: &ContactRecord, same: bool| {
+            same && (!pair_moves || own == Some(rec.state.limit.to_bits()))
+        };
+        // Asked only of touching pairs (a shape is behind a pointer).
+        let composite = || {
+            self.clustering
+                && [c1, c2]
+                    .into_iter()
+                    .any(|h| colliders.get(h).is_some_and(|c| is_composite(c.shape())))
+        };
+        // Only the colliders that move need to know they ride (see `settle_after_step`).
+        let rides = if self.moving.contains(c1) || self.moving.contains(c2) {
+            Judged::Rides
+        } else {
+            Judged::Quiet
+        };
+        let quiet_or_not = |quiet: bool| if quiet { rides } else { Judged::NotQuiet };
+        let mut touching = pair
+            .solver_manifolds()
+            .iter()
+            .filter(|m| !m.data.solver_contacts.is_empty());
+        match (touching.next(), touching.next()) {
+            // Nothing touches yet: a counterpart that moves towards the other may make a
+            // contact rapier would form without the hook, unless the two stay farther apart
+            // than rapier's prediction distance over the coming step, by twice their relative
+            // motion in a step (the pair is judged again after it).
+            (None, _) => {
+                let quiet = !pair_moves || {
+                    let motion = relative_motion(bodies, colliders, c1, c2, self.ahead.dt as f32);
+                    motion <= self.step_limit
+                        || apart(bodies, colliders, c1, c2, self.prediction + 2.0 * motion)
+                };
+                if quiet {
+                    Judged::Quiet
+                } else {
+                    Judged::NotQuiet
+                }
+            }
+            // One manifold (the common case): stepped in place, and kept if quiet (3.).
+            (Some(m), None) => {
+                let composite = composite();
+                if composite && patches.is_none() {
+                    return Judged::Left;
+                }
+                let ud = m.data.user_data;
+                let kept = records.update(ud, c1, c2, mark, |rec| {
+                    let before = *rec;
+                    let (same, meas) = self.ahead.step(m, (c1, c2), bodies, colliders, rec);
+                    if keeps(rec, same) {
+                        rec.ahead = true;
+                        Some(meas)
+                    } else {
+                        *rec = before;
+                        None
+                    }
+                });
+                let kept = kept.flatten();
+                if let (Some(Some(meas)), true, Some(patches)) = (kept, composite, patches) {
+                    patches.insert(ud, meas);
+                }
+                quiet_or_not(kept.is_some())
+            }
+            // Several: each tried on a copy, then stepped for good if all are quiet.
+            _ => {
+                let Some(patches) = patches else {
+                    return Judged::Left;
+                };
+                let all = pair.solver_manifolds().iter().all(|m| {
+                    m.data.solver_contacts.is_empty()
+                        || records
+                            .touch(m.data.user_data, c1, c2, mark)
+                            .is_some_and(|mut rec| {
+                                let (same, _) =
+                                    self.ahead.step(m, (c1, c2), bodies, colliders, &mut rec);
+                                keeps(&rec, same)
+                            })
+                });
+                if all {
+                    let composite = composite();
+                    let mut patches = composite.then_some(patches);
+                    for m in pair.solver_manifolds() {
+                        if m.data.solver_contacts.is_empty() {
+                            continue;
+                        }
+                        let Some(mut rec) = records.touch(m.data.user_data, c1, c2, mark) else {
+                            continue;
+                        };
+                        let (_, meas) = self.ahead.step(m, (c1, c2), bodies, colliders, &mut rec);
+                        let at = (m.data.user_data, c1, c2, mark);
+                        commit_ahead(records, patches.as_deref_mut(), at, rec, meas);
+                    }
+                }
+                quiet_or_not(all)
+            }
+        }
+    }
 }
 
 /// What the hook's next step on a recycled manifold needs besides the manifold: the pairs'
@@ -422,9 +799,8 @@ impl<H> StickSlip<H> {
             && (self.vibrations.get(h).is_some() || self.surfaces.get(h).is_some())
     }
 
-    /// The attached colliders of a pair whose flag keeps the pair hooked: those of moving
-    /// bodies, or every attached one if none moves (both, not one: which one would depend
-    /// on the order rapier gives the pair in).
+    /// The attached colliders of a pair whose flag keeps the pair hooked (see
+    /// [`hook_sides`]).
     fn sides_to_hook(
         &self,
         bodies: &RigidBodySet,
@@ -432,23 +808,8 @@ impl<H> StickSlip<H> {
         c1: ColliderHandle,
         c2: ColliderHandle,
     ) -> impl Iterator<Item = ColliderHandle> {
-        let (a1, a2) = (self.attached.contains(c1), self.attached.contains(c2));
-        // A side that is hooked at every step (a vibration source or a moving surface on it)
-        // keeps the pair hooked alone: flagging the other would only take the recycling of
-        // that collider's other pairs (the boxes on a vibrating plate).
-        let (a1, a2) = if self.always_hooked(c1) || self.always_hooked(c2) {
-            (false, false)
-        } else {
-            (a1, a2)
-        };
-        let (m1, m2) = (
-            a1 && !is_still(bodies, colliders, c1, false),
-            a2 && !is_still(bodies, colliders, c2, false),
-        );
-        let (k1, k2) = if m1 || m2 { (m1, m2) } else { (a1, a2) };
-        [(c1, k1), (c2, k2)]
-            .into_iter()
-            .filter_map(|(h, keep)| keep.then_some(h))
+        let always = |h| self.always_hooked(h);
+        hook_sides(&self.attached, always, bodies, colliders, (c1, c2))
     }
 
     /// Before a step: hooks again the quiet colliders that were asked to be (changed
@@ -536,6 +897,8 @@ impl<H> StickSlip<H> {
         moving.clear();
         let mut carried = std::mem::take(&mut self.recycling.carried);
         carried.clear();
+        let mut always = std::mem::take(&mut self.recycling.always);
+        always.clear();
         // 1. Colliders that may go (or stay) quiet: stickslip's flag, not marked by the hook,
         //    no source, a body that barely moves.
         let step_limit = MOTION_SHARE * window;
@@ -548,11 +911,14 @@ impl<H> StickSlip<H> {
             // does a collider with a hook flag of the user's besides stickslip's (a pair
             // filter): rapier never recycles its pairs, and without stickslip's flag their
             // full updates would get rapier's friction.
+            // Hooked at every step: a source or a moving surface on it.
+            if self.vibrations.get(h).is_some() || self.surfaces.get(h).is_some() {
+                always.set(h, true);
+                continue;
+            }
             if !self.attached.contains(h)
                 || !user_bits(c).is_empty()
                 || self.recycling.active.contains(h)
-                || self.vibrations.get(h).is_some()
-                || self.surfaces.get(h).is_some()
             {
                 continue;
             }
@@ -572,179 +938,82 @@ impl<H> StickSlip<H> {
             }
         }
         // 2. Every pair of stickslip's that will not be hooked: its manifolds must be quiet.
-        let clustering = self.clock.clustering;
-        // 3. (in the loop) The hook's next step, done now on the manifolds to be recycled
-        //    and kept in their records, marked: if a later pair hooks one of the colliders
-        //    again, the hook writes what this step found instead of stepping twice.
-        let ahead = Ahead {
-            laws: &self.laws,
+        //    Each pair is judged against the candidates of 1. (the same for every pair, in
+        //    whatever order and on whatever thread), and
+        // 3. the hook's next step is done now on the manifolds to be recycled and kept in
+        //    their records, marked: if a pair hooks one of the colliders again (below, or the
+        //    hook at the next step), the hook writes what this step found instead of stepping
+        //    twice. Pairs with several touching manifolds or a composite shape are left to
+        //    the serial pass (they file what they measure).
+        let judge = Judge {
+            ahead: Ahead {
+                laws: &self.laws,
+                attached: &self.attached,
+                warned: &self.warned,
+                dt,
+                time: self.clock.time,
+                stiffness_time: self.config.stiffness_time,
+            },
             attached: &self.attached,
-            warned: &self.warned,
-            dt,
-            time: self.clock.time,
-            stiffness_time: self.config.stiffness_time,
+            flagged: &self.flagged,
+            always: &always,
+            still: &still,
+            moving: &moving,
+            bodies,
+            colliders: &*colliders,
+            clustering: self.clock.clustering,
+            step_limit,
+            prediction,
+            mark,
         };
-        let flagged = &self.flagged;
-        let hooked_next = |h: ColliderHandle, attached: bool, next: &ColliderBits| {
-            if attached && flagged.contains(h) {
-                !next.contains(h)
-            } else {
-                colliders.get(h).is_some_and(|c| {
-                    c.active_hooks()
-                        .contains(ActiveHooks::MODIFY_SOLVER_CONTACTS)
-                })
-            }
-        };
-        let is_still_now = |h: ColliderHandle| {
-            if flagged.contains(h) {
-                still.contains(h)
-            } else {
-                is_still(bodies, colliders, h, true)
-            }
-        };
-        for pair in narrow_phase.contact_pairs() {
-            let (c1, c2) = (pair.collider1, pair.collider2);
-            let (a1, a2) = (self.attached.contains(c1), self.attached.contains(c2));
-            let hooked = !(a1 || a2) || hooked_next(c1, a1, &next) || hooked_next(c2, a2, &next);
-            // A pair the user filters (a filter flag on an unattached collider) is updated
-            // in full at every step, also once its bodies sleep and are woken: it stays
-            // hooked.
-            // (A candidate still to go quiet had none in 1.: only the other colliders are
-            // looked up, which spares the pile's resting pairs two reads of the arena.)
-            let filtered = !hooked
-                && [(c1, a1), (c2, a2)].into_iter().any(|(h, attached)| {
-                    !(attached && flagged.contains(h) && next.contains(h))
-                        && colliders.get(h).is_some_and(|c| !user_bits(c).is_empty())
-                });
-            if filtered {
-                for h in self.sides_to_hook(bodies, colliders, c1, c2) {
-                    next.set(h, false);
-                }
-                continue;
-            }
-            if hooked || (is_still_now(c1) && is_still_now(c2)) {
-                // A collider touching one hooked at every step (a vibrating plate, a belt)
-                // rests on it: it is not in flight.
-                for (h, other) in [(c1, c2), (c2, c1)] {
-                    if self.always_hooked(other)
-                        && pair
-                            .solver_manifolds()
-                            .iter()
-                            .any(|m| !m.data.solver_contacts.is_empty())
-                    {
-                        carried.set(h, true);
-                    }
-                }
-                continue;
-            }
-            let moves = |h: ColliderHandle| {
-                if flagged.contains(h) {
-                    moving.contains(h)
-                } else {
-                    colliders.get(h).is_some_and(|c| {
-                        let (_, reach) = anchor(bodies, c);
-                        step_motion(bodies, c, reach, dt as f32) > step_limit
-                    })
-                }
-            };
-            let pair_moves = moves(c1) || moves(c2);
-            // Rapier's own full update of a pair that moves writes the pair's combined
-            // friction coefficient and no target velocity.
-            let own = pair_moves.then(|| rapiers_own(colliders, c1, c2)).flatten();
-            // The touching manifolds must each be written the same by the hook's next step
-            // (and, for a pair that moves, by rapier's own full update).
-            let keeps = |rec: &ContactRecord, same: bool| {
-                same && (!pair_moves || own == Some(rec.state.limit.to_bits()))
-            };
-            // Asked only of touching pairs (a shape is behind a pointer).
-            let composite = || {
-                clustering
-                    && [c1, c2]
-                        .into_iter()
-                        .any(|h| colliders.get(h).is_some_and(|c| is_composite(c.shape())))
-            };
-            let mut touching = pair
-                .solver_manifolds()
-                .iter()
-                .filter(|m| !m.data.solver_contacts.is_empty());
-            let quiet = match (touching.next(), touching.next()) {
-                // Nothing touches yet: a counterpart that moves towards the other may make a
-                // contact rapier would form without the hook, unless the two stay farther
-                // apart than rapier's prediction distance over the coming step, by twice
-                // their relative motion in a step (the pair is judged again after it).
-                (None, _) => {
-                    !pair_moves || {
-                        let motion = relative_motion(bodies, colliders, c1, c2, dt as f32);
-                        motion <= step_limit
-                            || apart(bodies, colliders, c1, c2, prediction + 2.0 * motion)
-                    }
-                }
-                // One manifold (the common case): stepped in place, and kept if quiet (3.).
-                (Some(m), None) => {
-                    let ud = m.data.user_data;
-                    let kept = self.store.update(ud, c1, c2, mark, |rec| {
-                        let before = *rec;
-                        let (same, meas) = ahead.step(m, (c1, c2), bodies, colliders, rec);
-                        if keeps(rec, same) {
-                            rec.ahead = true;
-                            Some(meas)
-                        } else {
-                            *rec = before;
-                            None
+        let records = self.store.records();
+        let mut findings = std::mem::take(&mut self.recycling.findings);
+        judge_pairs(&judge, &records, narrow_phase, &next, &mut findings);
+        // 4. In the order of the pairs: a pair not quiet hooks its colliders again (those of
+        //    moving bodies), unless an earlier pair already did; a pair found quiet carries its
+        //    colliders.
+        let mut found = InOrder::new(&findings).peekable();
+        if found.peek().is_some() {
+            for (i, pair) in narrow_phase.contact_pairs().enumerate() {
+                while let Some(f) = found.next_if(|f| f.pair as usize == i) {
+                    let what = match f.what {
+                        Judged::Left => {
+                            judge.pair(pair, &next, &records, Some(&mut self.patches_measured))
                         }
-                    });
-                    match kept.flatten() {
-                        Some(meas) => {
-                            if let (Some(meas), true) = (meas, composite()) {
-                                self.patches_measured.insert(ud, meas);
+                        // Hooked since by a pair before it (as if judged in this order).
+                        Judged::NotQuiet | Judged::Rides if judge.hooked(pair, &next) => {
+                            Judged::Quiet
+                        }
+                        what => what,
+                    };
+                    let (c1, c2) = (pair.collider1, pair.collider2);
+                    match what {
+                        Judged::NotQuiet => {
+                            for h in judge.sides_to_hook(c1, c2) {
+                                next.set(h, false);
                             }
+                        }
+                        Judged::Rides => {
                             carried.set(c1, true);
                             carried.set(c2, true);
-                            true
                         }
-                        None => false,
-                    }
-                }
-                // Several: each tried on a copy, then stepped for good if all are quiet.
-                _ => {
-                    let all = pair.solver_manifolds().iter().all(|m| {
-                        m.data.solver_contacts.is_empty()
-                            || self
-                                .store
-                                .touch(m.data.user_data, c1, c2, mark)
-                                .is_some_and(|mut rec| {
-                                    let (same, _) =
-                                        ahead.step(m, (c1, c2), bodies, colliders, &mut rec);
-                                    keeps(&rec, same)
-                                })
-                    });
-                    if all {
-                        let composite = composite();
-                        for m in pair.solver_manifolds() {
-                            if m.data.solver_contacts.is_empty() {
-                                continue;
+                        Judged::Carries(first, second) => {
+                            for (h, carries) in [(c1, first), (c2, second)] {
+                                if carries {
+                                    carried.set(h, true);
+                                }
                             }
-                            let Some(mut rec) = self.store.touch(m.data.user_data, c1, c2, mark)
-                            else {
-                                continue;
-                            };
-                            let (_, meas) = ahead.step(m, (c1, c2), bodies, colliders, &mut rec);
-                            let patches = composite.then_some(&mut self.patches_measured);
-                            let at = (m.data.user_data, c1, c2, mark);
-                            commit_ahead(&mut self.store, patches, at, rec, meas);
                         }
-                        carried.set(c1, true);
-                        carried.set(c2, true);
+                        Judged::Quiet | Judged::Left => {}
                     }
-                    all
                 }
-            };
-            if !quiet {
-                for h in self.sides_to_hook(bodies, colliders, c1, c2) {
-                    next.set(h, false);
+                if found.peek().is_none() {
+                    break;
                 }
             }
         }
+        drop(found);
+        self.recycling.findings = findings;
         // A collider that moves rides only on something it touches: one in flight is hooked
         // (its landing is a new contact, rapier would form it without the hook).
         for i in moving.indices() {
@@ -821,6 +1090,7 @@ impl<H> StickSlip<H> {
         r.still = still;
         r.moving = moving;
         r.carried = carried;
+        r.always = always;
         r.active.clear();
     }
 }
