@@ -39,8 +39,9 @@ pub(crate) struct Recycling {
     /// Scratch: candidates to go quiet that moved more than [`MOTION_SHARE`] of the window in
     /// the step, found once per step instead of once per pair.
     pub moving: ColliderBits,
-    /// Scratch: colliders with a touching pair found quiet in the step.
-    pub carried: ColliderBits,
+    /// Scratch: colliders that move with a touching pair found quiet in the step (set by
+    /// the threads of the pass over the pairs).
+    pub carried: AtomicColliderBits,
     /// Scratch: attached colliders hooked at every step (a source or a moving surface on
     /// them), found once per step.
     pub always: ColliderBits,
@@ -58,7 +59,6 @@ impl Recycling {
             &self.next,
             &self.still,
             &self.moving,
-            &self.carried,
             &self.always,
         ]
         .iter()
@@ -66,6 +66,7 @@ impl Recycling {
         .sum::<usize>()
             + self.poses.heap_bytes()
             + self.active.heap_bytes()
+            + self.carried.heap_bytes()
             + crate::heap::vec_bytes(&self.findings)
             + self
                 .findings

@@ -103,12 +103,14 @@
 //! left to the serial pass after it (their measurements go to one map). That serial pass
 //! takes the findings in the order of rapier's list: a pair found not quiet hooks its
 //! colliders again unless a pair before it already hooked one of them. So the flags are
-//! those one thread going down the list sets; the one difference is that a pair hooked by an
+//! those one thread going down the list sets, but for two things: a pair hooked by an
 //! earlier one has had its next step done ahead, which the hook then writes (as for any
-//! collider hooked again after the pass). One thread and two decide the same, bit for bit
+//! collider hooked again after the pass), and a collider that moves rests on every touching
+//! pair found quiet, also one an earlier pair hooked (it touches something: it is not in
+//! flight). One thread and two decide the same, bit for bit
 //! (`crates/stickslip-fixtures/tests/rapier_recycling.rs`).
 
-use crate::collider_map::ColliderBits;
+use crate::collider_map::{AtomicColliderBits, ColliderBits};
 use crate::contact_store::is_composite;
 use crate::contact_store::{ContactRecord, Records};
 use crate::hook::inv_mass;
@@ -360,10 +362,8 @@ fn hook_sides(
 /// `StickSlip::settle_after_step`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum Judged {
-    /// Nothing to do: hooked, or quiet without a collider that moves.
+    /// Nothing left to do: hooked, or quiet.
     Quiet,
-    /// Quiet and touching, with a collider that moves: its colliders ride on the pair.
-    Rides,
     /// Not quiet (or filtered by the user): its colliders are hooked again.
     NotQuiet,
     /// Hooked or still, and touching a collider hooked at every step, on which its first,
@@ -374,11 +374,40 @@ pub(crate) enum Judged {
     Left,
 }
 
-/// A contact pair, by its place in rapier's list of pairs, and what was found for it.
+/// A contact pair, by its place in rapier's list of pairs, and what was found for it, in
+/// 4 bytes: the place in the upper 29 bits (a list of 2²⁹ pairs would take rapier some
+/// 100 GB), what was found in the lower 3.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Finding {
-    pair: u32,
-    what: Judged,
+pub(crate) struct Finding(u32);
+
+impl Finding {
+    fn new(pair: usize, what: Judged) -> Self {
+        let code = match what {
+            Judged::Quiet => 0,
+            Judged::NotQuiet => 2,
+            Judged::Carries(true, false) => 3,
+            Judged::Carries(false, true) => 4,
+            Judged::Carries(..) => 5,
+            Judged::Left => 6,
+        };
+        let pair = u32::try_from(pair).map_or(u32::MAX >> 3, |p| p.min(u32::MAX >> 3));
+        Finding(pair << 3 | code)
+    }
+
+    fn pair(self) -> usize {
+        (self.0 >> 3) as usize
+    }
+
+    fn what(self) -> Judged {
+        match self.0 & 7 {
+            2 => Judged::NotQuiet,
+            3 => Judged::Carries(true, false),
+            4 => Judged::Carries(false, true),
+            5 => Judged::Carries(true, true),
+            6 => Judged::Left,
+            _ => Judged::Quiet,
+        }
+    }
 }
 
 /// Contact pairs a thread of the pass takes from rapier's list at a time.
@@ -421,10 +450,14 @@ fn judge_pairs(
             for &(i, pair) in batch[..taken].iter().flatten() {
                 let what = judge.pair(pair, next, records, None);
                 if what != Judged::Quiet {
-                    let pair = u32::try_from(i).unwrap_or(u32::MAX);
-                    out.push(Finding { pair, what });
+                    out.push(Finding::new(i, what));
                 }
             }
+        }
+        // What a burst of findings (a tower settling) left is given back, with room to spare
+        // so that a list which merely varies keeps its memory.
+        if out.capacity() > 4 * out.len() + 256 {
+            out.shrink_to(2 * out.len() + 64);
         }
     };
     #[cfg(feature = "parallel")]
@@ -471,7 +504,7 @@ impl Iterator for InOrder<'_> {
             .iter()
             .enumerate()
             .filter_map(|(k, part)| part.get(self.at[k]).map(|f| (k, *f)))
-            .min_by_key(|(_, f)| f.pair)?;
+            .min_by_key(|(_, f)| f.pair())?;
         self.at[k] += 1;
         Some(f)
     }
@@ -485,6 +518,9 @@ struct Judge<'a> {
     flagged: &'a ColliderBits,
     /// Colliders stickslip hooks at every step.
     always: &'a ColliderBits,
+    /// Colliders that move and touch through a pair found quiet (set by the pass's threads;
+    /// sized for the colliders that move).
+    carried: &'a AtomicColliderBits,
     still: &'a ColliderBits,
     moving: &'a ColliderBits,
     bodies: &'a RigidBodySet,
@@ -601,13 +637,16 @@ impl Judge<'_> {
                     .into_iter()
                     .any(|h| colliders.get(h).is_some_and(|c| is_composite(c.shape())))
         };
-        // Only the colliders that move need to know they ride (see `settle_after_step`).
-        let rides = if self.moving.contains(c1) || self.moving.contains(c2) {
-            Judged::Rides
-        } else {
+        // A touching pair found quiet carries its colliders: they are not in flight (only
+        // those that move are asked, see `settle_after_step`).
+        let quiet_or_not = |quiet: bool| {
+            if !quiet {
+                return Judged::NotQuiet;
+            }
+            self.carried.set(c1);
+            self.carried.set(c2);
             Judged::Quiet
         };
-        let quiet_or_not = |quiet: bool| if quiet { rides } else { Judged::NotQuiet };
         let mut touching = pair
             .solver_manifolds()
             .iter()
@@ -935,6 +974,8 @@ impl<H> StickSlip<H> {
             next.set(h, true);
             if step_motion(bodies, c, reach, dt as f32) > step_limit {
                 moving.set(h, true);
+                // Only a collider that moves needs to know it rides.
+                carried.cover(h);
             }
         }
         // 2. Every pair of stickslip's that will not be hooked: its manifolds must be quiet.
@@ -957,6 +998,7 @@ impl<H> StickSlip<H> {
             attached: &self.attached,
             flagged: &self.flagged,
             always: &always,
+            carried: &carried,
             still: &still,
             moving: &moving,
             bodies,
@@ -975,15 +1017,13 @@ impl<H> StickSlip<H> {
         let mut found = InOrder::new(&findings).peekable();
         if found.peek().is_some() {
             for (i, pair) in narrow_phase.contact_pairs().enumerate() {
-                while let Some(f) = found.next_if(|f| f.pair as usize == i) {
-                    let what = match f.what {
+                while let Some(f) = found.next_if(|f| f.pair() == i) {
+                    let what = match f.what() {
                         Judged::Left => {
                             judge.pair(pair, &next, &records, Some(&mut self.patches_measured))
                         }
                         // Hooked since by a pair before it (as if judged in this order).
-                        Judged::NotQuiet | Judged::Rides if judge.hooked(pair, &next) => {
-                            Judged::Quiet
-                        }
+                        Judged::NotQuiet if judge.hooked(pair, &next) => Judged::Quiet,
                         what => what,
                     };
                     let (c1, c2) = (pair.collider1, pair.collider2);
@@ -993,14 +1033,10 @@ impl<H> StickSlip<H> {
                                 next.set(h, false);
                             }
                         }
-                        Judged::Rides => {
-                            carried.set(c1, true);
-                            carried.set(c2, true);
-                        }
                         Judged::Carries(first, second) => {
                             for (h, carries) in [(c1, first), (c2, second)] {
                                 if carries {
-                                    carried.set(h, true);
+                                    judge.carried.set(h);
                                 }
                             }
                         }
@@ -1098,6 +1134,23 @@ impl<H> StickSlip<H> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_finding_keeps_its_pair_and_what_was_found() {
+        let all = [
+            Judged::NotQuiet,
+            Judged::Carries(true, false),
+            Judged::Carries(false, true),
+            Judged::Carries(true, true),
+            Judged::Left,
+        ];
+        for pair in [0, 1, 4095, (1 << 29) - 2] {
+            for what in all {
+                let f = Finding::new(pair, what);
+                assert_eq!((f.pair(), f.what()), (pair, what));
+            }
+        }
+    }
 
     #[test]
     fn drift_adds_the_rotation_chord_at_the_reach() {
