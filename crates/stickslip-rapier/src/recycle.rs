@@ -533,12 +533,14 @@ struct Judge<'a> {
 
 impl Judge<'_> {
     /// Whether the pair is hooked at the next step with the quiet set `next`.
+    #[inline]
     fn hooked(&self, pair: &ContactPair, next: &ColliderBits) -> bool {
         let (c1, c2) = (pair.collider1, pair.collider2);
         let (a1, a2) = (self.attached.contains(c1), self.attached.contains(c2));
         !(a1 || a2) || self.hooked_next(c1, a1, next) || self.hooked_next(c2, a2, next)
     }
 
+    #[inline]
     fn hooked_next(&self, h: ColliderHandle, attached: bool, next: &ColliderBits) -> bool {
         if attached && self.flagged.contains(h) {
             !next.contains(h)
@@ -550,6 +552,7 @@ impl Judge<'_> {
         }
     }
 
+    #[inline]
     fn is_still_now(&self, h: ColliderHandle) -> bool {
         if self.flagged.contains(h) {
             self.still.contains(h)
@@ -558,6 +561,7 @@ impl Judge<'_> {
         }
     }
 
+    #[inline]
     fn moves(&self, h: ColliderHandle) -> bool {
         if self.flagged.contains(h) {
             self.moving.contains(h)
