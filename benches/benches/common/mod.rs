@@ -622,6 +622,17 @@ impl Bench {
     /// One step (moves the kinematic driver first).
     #[inline]
     pub fn step(&mut self) {
+        let dt = self.drive();
+        match &mut self.stepper {
+            Stepper::Plain => self.world.step(),
+            Stepper::Noop(h) => self.world.step_with_events(&*h, &()),
+            Stepper::StickSlip(m) => m.step(&mut self.world),
+        }
+        self.time += dt;
+    }
+
+    /// Moves the driven kinematic bodies to where the coming step takes them; returns dt.
+    fn drive(&mut self) -> f64 {
         let dt = self.world.integration_parameters.dt as f64;
         for d in &self.drivers {
             let t = (self.time + dt) as f32;
@@ -629,12 +640,61 @@ impl Bench {
             let to = d.origin + d.direction * s;
             self.world.bodies[d.body].set_next_kinematic_translation(to);
         }
-        match &mut self.stepper {
-            Stepper::Plain => self.world.step(),
-            Stepper::Noop(h) => self.world.step_with_events(&*h, &()),
-            Stepper::StickSlip(m) => m.step(&mut self.world),
-        }
+        dt
+    }
+
+    /// [`Self::step`], timed by `clock` in three phases: what stickslip does before rapier's
+    /// step (`wake_driven`, `begin_step`, `resist_rotation`), rapier's step (with the hook
+    /// inside), and what stickslip does after it (`end_step`: the pass that decides which
+    /// contacts recycle, the sweep). The same calls as `StickSlip::step`; a plain or no-op
+    /// world is all rapier.
+    pub fn step_phases(
+        &mut self,
+        clock: impl Fn() -> std::time::Duration,
+    ) -> [std::time::Duration; 3] {
+        let dt = self.drive();
+        let t0 = clock();
+        let phases = match &mut self.stepper {
+            Stepper::Plain => {
+                self.world.step();
+                [t0, t0, clock(), clock()]
+            }
+            Stepper::Noop(h) => {
+                self.world.step_with_events(&*h, &());
+                [t0, t0, clock(), clock()]
+            }
+            Stepper::StickSlip(m) => {
+                let w = &mut self.world;
+                m.wake_driven(&w.narrow_phase, &w.colliders, &mut w.bodies);
+                m.begin_step(&w.integration_parameters, &w.bodies, &mut w.colliders);
+                m.resist_rotation(
+                    &w.integration_parameters,
+                    &mut w.impulse_joints,
+                    &w.narrow_phase,
+                    &mut w.bodies,
+                    &w.colliders,
+                );
+                let t1 = clock();
+                w.step_with_events(&**m, &());
+                let t2 = clock();
+                m.end_step(&w.narrow_phase, &w.bodies, &mut w.colliders);
+                [t0, t1, t2, clock()]
+            }
+        };
         self.time += dt;
+        [
+            phases[1] - phases[0],
+            phases[2] - phases[1],
+            phases[3] - phases[2],
+        ]
+    }
+
+    /// (contact pairs rapier keeps, those with a touching manifold) after the last step.
+    pub fn pairs(&self) -> (usize, usize) {
+        let pairs = self.world.narrow_phase.contact_pairs();
+        pairs.fold((0, 0), |(n, touching), p| {
+            (n + 1, touching + usize::from(p.has_any_active_contact()))
+        })
     }
 
     /// (manifolds with solver contacts, solver contact points, all manifolds rapier keeps —

@@ -616,9 +616,10 @@ impl Judge<'_> {
         };
         if hooked || (self.is_still_now(c1) && self.is_still_now(c2)) {
             // A collider touching one hooked at every step (a vibrating plate, a belt) rests
-            // on it: it is not in flight.
-            let first = self.always.contains(c2) && touches();
-            let second = self.always.contains(c1) && touches();
+            // on it: it is not in flight. (Only a collider that moves needs to know.)
+            let rests = |h, on| self.moving.contains(h) && self.always.contains(on);
+            let first = rests(c1, c2) && touches();
+            let second = rests(c2, c1) && touches();
             return if first || second {
                 Judged::Carries(first, second)
             } else {
@@ -647,8 +648,11 @@ impl Judge<'_> {
             if !quiet {
                 return Judged::NotQuiet;
             }
-            self.carried.set(c1);
-            self.carried.set(c2);
+            for h in [c1, c2] {
+                if self.moving.contains(h) {
+                    self.carried.set(h);
+                }
+            }
             Judged::Quiet
         };
         let mut touching = pair
