@@ -56,6 +56,7 @@ mod hook;
 mod measure;
 mod modifier;
 mod pair_law;
+mod pair_list;
 mod patches;
 pub mod prelude;
 mod quiet;

@@ -48,6 +48,11 @@ pub(crate) struct Recycling {
     /// Scratch: what the pass over the contact pairs found, one list per part of the pairs
     /// (see `recycle::judge_pairs`).
     pub findings: Vec<Vec<crate::recycle::Finding>>,
+    /// Scratch: the contact pairs the pass judges (see `pair_list`).
+    pub pairs: crate::pair_list::PairList,
+    /// Tests only: `Some(true)` walks the pass's pairs, `Some(false)` judges every pair,
+    /// whatever their number (see `pair_list`).
+    pub walk: Option<bool>,
 }
 
 impl Recycling {
@@ -67,6 +72,7 @@ impl Recycling {
             + self.poses.heap_bytes()
             + self.active.heap_bytes()
             + self.carried.heap_bytes()
+            + self.pairs.heap_bytes()
             + crate::heap::vec_bytes(&self.findings)
             + self
                 .findings

@@ -94,6 +94,14 @@
 //!
 //! With `contact_recycling` off, or a pause (dt = 0), every flag stays on.
 //!
+//! ## Which pairs the pass reads
+//! Only a pair with a candidate to go quiet (or an attached collider whose flag is the
+//! user's) on a side can change anything: every other pair is hooked. When such colliders are
+//! few (a world where only the ground or a conveyor is attached), the pass judges their pairs
+//! alone, found through rapier's adjacency lists, instead of every pair rapier keeps; either
+//! way in the order of rapier's list, so the decisions are the same (`pair_list`;
+//! `crates/stickslip-fixtures/tests/rapier_recycling.rs`).
+//!
 //! ## On several threads
 //! With rapier's `parallel` feature the pass after each step runs on rayon's threads (the
 //! pool the step runs in): each thread takes batches of contact pairs from rapier's list and
@@ -416,39 +424,34 @@ const BATCH: usize = 128;
 /// Most parts (threads) of the pass.
 const MAX_PARTS: usize = 64;
 
-/// Judges every contact pair (steps 2 and 3 of `StickSlip::settle_after_step`) into
-/// `findings`, one list per part, each in the order of rapier's list of pairs; with the
-/// `parallel` feature a part runs on each of rayon's threads, taking batches of pairs from
-/// the list as it goes (so the work is shared however its cost spreads over the list). A
-/// pair's finding depends on the pair and the candidates in `next` alone, not on the part or
-/// the thread that judged it.
-fn judge_pairs(
+/// Judges the contact pairs (steps 2 and 3 of `StickSlip::settle_after_step`) into
+/// `findings`, one list per part, each in the order of rapier's list of pairs: the pairs at
+/// `places` in that list (increasing), or every pair. With the `parallel` feature a part runs
+/// on each of rayon's threads, taking batches of pairs as it goes (so the work is shared
+/// however its cost spreads over the list). A pair's finding depends on the pair and the
+/// candidates in `next` alone, not on the part or the thread that judged it. `pairs`: rapier's
+/// list, and `weight` the pair of one of its entries.
+fn judge_pairs<E: Sync>(
     judge: &Judge,
     records: &Records,
-    narrow_phase: &NarrowPhase,
+    (pairs, weight): (&[E], impl Fn(&E) -> &ContactPair + Sync),
+    places: Option<&[u32]>,
     next: &ColliderBits,
     findings: &mut Vec<Vec<Finding>>,
 ) {
-    let pairs = std::sync::Mutex::new(narrow_phase.contact_pairs().enumerate());
+    let count = places.map_or(pairs.len(), <[u32]>::len);
+    let taken = std::sync::atomic::AtomicUsize::new(0);
     let judge_part = |out: &mut Vec<Finding>| {
         out.clear();
-        let mut batch = [None; BATCH];
         loop {
-            let taken = {
-                let mut pairs = crate::contact_store::lock(&pairs);
-                batch
-                    .iter_mut()
-                    .map_while(|slot| {
-                        *slot = pairs.next();
-                        slot.is_some().then_some(())
-                    })
-                    .count()
-            };
-            if taken == 0 {
+            let start = taken.fetch_add(BATCH, std::sync::atomic::Ordering::Relaxed);
+            if start >= count {
                 break;
             }
-            for &(i, pair) in batch[..taken].iter().flatten() {
-                let what = judge.pair(pair, next, records, None);
+            for k in start..count.min(start + BATCH) {
+                let i = places.map_or(k, |p| p[k] as usize);
+                let Some(entry) = pairs.get(i) else { continue };
+                let what = judge.pair(weight(entry), next, records, None);
                 if what != Judged::Quiet {
                     out.push(Finding::new(i, what));
                 }
@@ -1018,46 +1021,53 @@ impl<H> StickSlip<H> {
         };
         let records = self.store.records();
         let mut findings = std::mem::take(&mut self.recycling.findings);
-        judge_pairs(&judge, &records, narrow_phase, &next, &mut findings);
+        // Only the pairs whose finding can change something (see `pair_list`).
+        let mut list = std::mem::take(&mut self.recycling.pairs);
+        let bits = (&next, &self.attached, &self.flagged);
+        list.choose(narrow_phase, colliders, bits, self.recycling.walk);
+        let pairs = narrow_phase.contact_graph().raw_graph().raw_edges();
+        let listed = list.places();
+        judge_pairs(
+            &judge,
+            &records,
+            (pairs, |e| &e.weight),
+            listed,
+            &next,
+            &mut findings,
+        );
         // 4. In the order of the pairs: a pair not quiet hooks its colliders again (those of
         //    moving bodies), unless an earlier pair already did; a pair found quiet carries its
         //    colliders.
-        let mut found = InOrder::new(&findings).peekable();
-        if found.peek().is_some() {
-            for (i, pair) in narrow_phase.contact_pairs().enumerate() {
-                while let Some(f) = found.next_if(|f| f.pair() == i) {
-                    let what = match f.what() {
-                        Judged::Left => {
-                            judge.pair(pair, &next, &records, Some(&mut self.patches_measured))
-                        }
-                        // Hooked since by a pair before it (as if judged in this order).
-                        Judged::NotQuiet if judge.hooked(pair, &next) => Judged::Quiet,
-                        what => what,
-                    };
-                    let (c1, c2) = (pair.collider1, pair.collider2);
-                    match what {
-                        Judged::NotQuiet => {
-                            for h in judge.sides_to_hook(c1, c2) {
-                                next.set(h, false);
-                            }
-                        }
-                        Judged::Carries(first, second) => {
-                            for (h, carries) in [(c1, first), (c2, second)] {
-                                if carries {
-                                    judge.carried.set(h);
-                                }
-                            }
-                        }
-                        Judged::Quiet | Judged::Left => {}
+        for f in InOrder::new(&findings) {
+            let Some(entry) = pairs.get(f.pair()) else {
+                continue;
+            };
+            let pair = &entry.weight;
+            let what = match f.what() {
+                Judged::Left => judge.pair(pair, &next, &records, Some(&mut self.patches_measured)),
+                // Hooked since by a pair before it (as if judged in this order).
+                Judged::NotQuiet if judge.hooked(pair, &next) => Judged::Quiet,
+                what => what,
+            };
+            let (c1, c2) = (pair.collider1, pair.collider2);
+            match what {
+                Judged::NotQuiet => {
+                    for h in judge.sides_to_hook(c1, c2) {
+                        next.set(h, false);
                     }
                 }
-                if found.peek().is_none() {
-                    break;
+                Judged::Carries(first, second) => {
+                    for (h, carries) in [(c1, first), (c2, second)] {
+                        if carries {
+                            judge.carried.set(h);
+                        }
+                    }
                 }
+                Judged::Quiet | Judged::Left => {}
             }
         }
-        drop(found);
         self.recycling.findings = findings;
+        self.recycling.pairs = list;
         // A collider that moves rides only on something it touches: one in flight is hooked
         // (its landing is a new contact, rapier would form it without the hook).
         for i in moving.indices() {
