@@ -51,23 +51,17 @@ impl PairList {
     ) {
         self.listed.clear();
         self.all = true;
-        let roots = || {
-            next.indices().chain(
-                attached
-                    .indices()
-                    .filter(|&i| !flagged.contains_index(i) && !next.contains_index(i)),
-            )
+        // The candidates are attached colliders with stickslip's flag.
+        let root = |i: u32| {
+            attached.contains_index(i) && (next.contains_index(i) || !flagged.contains_index(i))
         };
+        let roots = || attached.indices().filter(|&i| root(i));
         let most = colliders.len() / WALK_SHARE;
         let few = roots().take(most + 1).count() <= most;
         if !walk.unwrap_or(few) {
             self.shrink();
             return;
         }
-        let is_root = |h: ColliderHandle| {
-            let i = h.0.into_raw_parts().0;
-            next.contains_index(i) || (attached.contains_index(i) && !flagged.contains_index(i))
-        };
         let edges = narrow_phase.contact_graph().raw_graph().raw_edges();
         let Some(first) = edges.first() else {
             self.all = false;
@@ -92,7 +86,8 @@ impl PairList {
                     pair.collider1
                 };
                 // A pair of two roots is listed once, from the root of the lower index.
-                if is_root(other) && other.0.into_raw_parts().0 < i {
+                let j = other.0.into_raw_parts().0;
+                if root(j) && j < i {
                     continue;
                 }
                 match place(pair) {
