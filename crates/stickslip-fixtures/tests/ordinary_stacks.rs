@@ -10,7 +10,10 @@
 //! about the normal stops at the rate twist friction gives under plain rapier, within 5 %.
 //! While the keva tower settles (from 2 s, over 10 s) its motion is chaotic, so it is judged
 //! across floors tilted to 0.02–0.08: summed over them, no more planks move by 1 mm under EP
-//! than under plain rapier.
+//! than under plain rapier; and, with 8 solver iterations (rapier's default 4 under-converge
+//! a tower whose contacts are recomputed at every step, as any hooked pair's are), on floors
+//! tilted to 0.1 and 0.12 no more planks (+2) and a mean drift within 0.1 mm of plain
+//! rapier's.
 //! In 2D (stickslip-fixtures2d) the same for what a plane has: the pyramid, the wall and the
 //! dominoes.
 
@@ -225,15 +228,44 @@ fn a_settling_keva_tower_moves_no_more_than_under_plain_rapier_across_tilts() {
     for (t, plain, ep) in &tilts {
         println!("tan θ {t}: planks > 1 mm from 2 s to 12 s: plain {plain}, EP {ep}");
     }
-    // Not asserted (issue 38): near the tower's limit, at tan θ = 0.12, it falls under
-    // stickslip as under a hook that changes nothing (rapier updates a hooked pair in full
-    // at every step), while plain rapier's stands.
-    for f in [
-        Friction::Plain,
-        Friction::Hooked,
-        Friction::Law("ep", ep(0.5, 0.5)),
+    // Not asserted here: near the tower's limit, at tan θ = 0.12 and rapier's default 4 solver
+    // iterations, it slides down the floor under stickslip as under a hook that changes
+    // nothing and as under plain rapier with contact recycling off, while plain rapier's
+    // stands (see the test after this one).
+    let tower = |recycling: bool| {
+        let mut scene = stack(Stack::Keva, 3, 0.12, 0.5, DT);
+        scene.world.integration_parameters.contact_recycling = recycling;
+        scene
+    };
+    // What a hooked pair's full update at every step does to the warm start, counted.
+    #[cfg(not(rapier_035))]
+    {
+        let counter = NewContacts::default();
+        let mut scene = stack(Stack::Keva, 3, 0.0, 0.5, DT);
+        for c in scene.all_colliders() {
+            scene.world.colliders[c].set_active_hooks(ActiveHooks::MODIFY_SOLVER_CONTACTS);
+        }
+        for step in 0..720 {
+            if step == 480 {
+                counter.reset();
+            }
+            scene.world.step_with_events(&counter, &());
+        }
+        let (seen, new) = counter.counts();
+        println!(
+            "upright, 8 s to 12 s, a hook that changes nothing: {} of {} solver contacts a step \
+             did not exist at the pair's last update (no warm start)",
+            new / 240,
+            seen / 240
+        );
+    }
+    for (name, f, recycling) in [
+        ("plain", Friction::Plain, true),
+        ("plain, recycling off", Friction::Plain, false),
+        ("no-op hook", Friction::Hooked, true),
+        ("ep", Friction::Law("ep", ep(0.5, 0.5)), true),
     ] {
-        let mut run = Run::new(stack(Stack::Keva, 3, 0.12, 0.5, DT), &f);
+        let mut run = Run::new(tower(recycling), &f);
         let from = run.scene.positions();
         run.run_for(12.0);
         let to = run.scene.positions();
@@ -243,8 +275,7 @@ fn a_settling_keva_tower_moves_no_more_than_under_plain_rapier_across_tilts() {
             .filter(|(a, b)| (**b - **a).length() > 0.1)
             .count();
         println!(
-            "tan θ 0.12, 12 s: {}: {fallen} of {} planks moved > 10 cm, mean creep {:.3} m",
-            f.name(),
+            "tan θ 0.12, 12 s: {name}: {fallen} of {} planks moved > 10 cm, mean creep {:.3} m",
             from.len(),
             between(&from, &to).creep
         );
@@ -254,6 +285,85 @@ fn a_settling_keva_tower_moves_no_more_than_under_plain_rapier_across_tilts() {
         ep <= plain,
         "settling keva tower: EP moved {ep} planks, plain rapier {plain} ({tilts:?})"
     );
+}
+
+/// A hook that changes nothing and counts the solver contacts it sees, and those whose point
+/// did not exist at the pair's last update (rapier's `NEW_CONTACT_BIT`: no warm start).
+#[cfg(not(rapier_035))]
+#[derive(Default)]
+struct NewContacts {
+    seen: std::sync::atomic::AtomicUsize,
+    new: std::sync::atomic::AtomicUsize,
+}
+
+#[cfg(not(rapier_035))]
+impl NewContacts {
+    fn reset(&self) {
+        self.seen.store(0, std::sync::atomic::Ordering::Relaxed);
+        self.new.store(0, std::sync::atomic::Ordering::Relaxed);
+    }
+
+    fn counts(&self) -> (usize, usize) {
+        let load =
+            |a: &std::sync::atomic::AtomicUsize| a.load(std::sync::atomic::Ordering::Relaxed);
+        (load(&self.seen), load(&self.new))
+    }
+}
+
+#[cfg(not(rapier_035))]
+impl PhysicsHooks for NewContacts {
+    fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
+        let ModifiableContacts::Rigid(m) = &ctx.contacts else {
+            return;
+        };
+        let new = m
+            .solver_contacts
+            .iter()
+            .filter(|c| c.contact_id[0] & NEW_CONTACT_BIT != 0)
+            .count();
+        let ordering = std::sync::atomic::Ordering::Relaxed;
+        self.seen.fetch_add(m.solver_contacts.len(), ordering);
+        self.new.fetch_add(new, ordering);
+    }
+}
+
+/// Why a settling tower moves more under any contact hook than under plain rapier: rapier
+/// recycles no hooked pair, it recomputes the pair's contacts at every step, and in the keva
+/// tower about 1 in 6 of the points it then picks did not exist at the last update, so their
+/// solve starts without warm start (the upright tower at rest under a hook that changes
+/// nothing, 8 s to 12 s: the test before this one prints the count). At rapier's default 4
+/// solver iterations that under-converges: tilted to 0.12 the tower slides down the floor
+/// under that hook, under stickslip and under plain rapier with contact recycling off, while
+/// plain rapier's stands. With 8 iterations full updates settle it, and stickslip's tower —
+/// on a floor tilted to 0.1 and to 0.12, from 2 s, still settling, for 10 s — moves no more
+/// planks by over 1 mm than plain rapier's (+2) and drifts within 0.1 mm of plain rapier's
+/// mean drift.
+#[cfg(not(dim2))]
+#[test]
+fn with_eight_solver_iterations_a_settling_keva_tower_moves_as_under_plain_rapier() {
+    let window = |tan_theta: f64, friction: &Friction| {
+        let mut scene = stack(Stack::Keva, 3, tan_theta, 0.5, DT);
+        scene.world.integration_parameters.num_solver_iterations = 8;
+        let mut run = Run::new(scene, friction);
+        run.run_for(2.0);
+        let from = run.scene.positions();
+        run.run_for(10.0);
+        between(&from, &run.scene.positions())
+    };
+    let mut failures = Vec::new();
+    for tan_theta in [0.1, 0.12] {
+        let plain = window(tan_theta, &Friction::Plain);
+        let ep = window(tan_theta, &Friction::Law("ep", ep(0.5, 0.5)));
+        println!(
+            "8 iterations, tan θ {tan_theta}, from 2 s to 12 s: plain > 1 mm {}, drift {:.2e} m; \
+             ep > 1 mm {}, drift {:.2e} m",
+            plain.over_1mm, plain.creep, ep.over_1mm, ep.creep
+        );
+        if ep.over_1mm > plain.over_1mm + 2 || (ep.creep - plain.creep).abs() > 1e-4 {
+            failures.push(format!("tan θ {tan_theta}: plain {plain:?}, ep {ep:?}"));
+        }
+    }
+    assert!(failures.is_empty(), "settling keva tower: {failures:?}");
 }
 
 #[test]
