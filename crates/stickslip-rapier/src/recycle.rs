@@ -33,8 +33,8 @@
 //! other — a face touching at zero gap, common in towers built edge to edge, gets the law's
 //! static coefficient every step. Before, such unloaded contacts were never quiet, and the
 //! planks that carried them were hooked every step: 40 of the 445 colliders of a 444-plank
-//! keva tower recycled, against 94–98 % now (`crates/stickslip-fixtures/tests/ordinary_stacks.rs` keeps that tower as
-//! still as plain rapier). Contacts that slip, form or give stay hooked although their write
+//! keva tower recycled, against 94–98 % now (`crates/stickslip-fixtures/tests/ordinary_stacks.rs` keeps that tower, once
+//! settled, as still as plain rapier's). Contacts that slip, form or give stay hooked although their write
 //! may repeat (a slide at a flat μ_k): recycled, a sliding cube on a compound ground and the
 //! order of a pair's colliders made differences beyond plain rapier's own
 //! (`crates/stickslip-fixtures/tests/ordinary_grounds.rs`, `crates/stickslip-fixtures/tests/shared_world.rs`).
