@@ -289,14 +289,14 @@ fn a_settling_keva_tower_moves_no_more_than_under_plain_rapier_across_tilts() {
 
 /// A hook that changes nothing and counts the solver contacts it sees, and those whose point
 /// did not exist at the pair's last update (rapier's `NEW_CONTACT_BIT`: no warm start).
-#[cfg(not(rapier_035))]
+#[cfg(all(not(dim2), not(rapier_035)))]
 #[derive(Default)]
 struct NewContacts {
     seen: std::sync::atomic::AtomicUsize,
     new: std::sync::atomic::AtomicUsize,
 }
 
-#[cfg(not(rapier_035))]
+#[cfg(all(not(dim2), not(rapier_035)))]
 impl NewContacts {
     fn reset(&self) {
         self.seen.store(0, std::sync::atomic::Ordering::Relaxed);
@@ -310,7 +310,7 @@ impl NewContacts {
     }
 }
 
-#[cfg(not(rapier_035))]
+#[cfg(all(not(dim2), not(rapier_035)))]
 impl PhysicsHooks for NewContacts {
     fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
         let ModifiableContacts::Rigid(m) = &ctx.contacts else {
